@@ -1,0 +1,21 @@
+#pragma once
+// Integrator: one method of evaluating the volume rendering integral (SPEC §4)
+// along one ray. Every method in vri is one class behind this interface; the
+// renderer calls integrate() concurrently from several threads, so it is const
+// and keeps no mutable state.
+#include <string_view>
+
+#include "vri/core/ray.hpp"
+#include "vri/core/rgba.hpp"
+
+namespace vri {
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  // Premultiplied (C_r, C_g, C_b, alpha) of the ray, before any background.
+  virtual Rgba integrate(const Ray& ray) const = 0;
+  virtual std::string_view name() const = 0;
+};
+
+}  // namespace vri

@@ -1,0 +1,27 @@
+#pragma once
+// RiemannIntegrator (SPEC §9 `riemann`): the classic ray caster. Samples at
+// t_k = t0 + k*h (left end of each step, k = 0..N-1, N = ceil(L/h)); each step
+// is a homogeneous slab of length h_k = min(h, t1 - t_k) with the sample's
+// colour and extinction, composited front to back:
+//   alpha_k = 1 - exp(-tau(s_k) h_k),  C += T c(s_k) alpha_k,  T *= 1 - alpha_k.
+// A left Riemann sum of the optical depth: first-order accurate in h.
+#include "vri/integrators/integrator.hpp"
+#include "vri/transfer/transfer_function.hpp"
+#include "vri/volume/grid_volume.hpp"
+
+namespace vri {
+
+class RiemannIntegrator final : public Integrator {
+ public:
+  // step in voxel units; throws vri::Error unless 1e-4 <= step <= 1e4.
+  RiemannIntegrator(const GridVolume& volume, const TransferFunction& tf, double step);
+  Rgba integrate(const Ray& ray) const override;
+  std::string_view name() const override { return "riemann"; }
+
+ private:
+  const GridVolume& volume_;
+  const TransferFunction& tf_;
+  double h_;  // world units
+};
+
+}  // namespace vri

@@ -1,0 +1,22 @@
+#pragma once
+// NRRD volumes (teem's format): attached ".nrrd" and detached ".nhdr" headers,
+// raw, gzip and ascii encodings, either endianness.
+#include <filesystem>
+
+#include "vri/volume/grid_volume.hpp"
+#include "vri/volume/scalar_type.hpp"
+
+namespace vri {
+
+// Reads a 3D NRRD (or 4D with a leading axis of size 1). Spacing comes from
+// `spacings`, or from the lengths of `space directions` (rotations are not
+// applied: vri grids are axis-aligned); origin from `space origin`.
+GridVolume read_nrrd(const std::filesystem::path& path);
+
+enum class NrrdEncoding { Raw, Gzip };
+// Writes float32 samples. With a ".nhdr" path the data goes to a detached file
+// beside it (".raw" or ".raw.gz").
+void write_nrrd(const std::filesystem::path& path, const GridVolume& volume,
+                NrrdEncoding encoding = NrrdEncoding::Raw);
+
+}  // namespace vri

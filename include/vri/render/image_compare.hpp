@@ -1,0 +1,18 @@
+#pragma once
+// Per-channel differences between two images (SPEC §10 `vri compare`).
+#include <array>
+#include <vector>
+
+namespace vri {
+
+struct ChannelDifference {
+  double share_over = 0;  // share of pixels with |a - b| > tolerance, in [0, 1]
+  double rms = 0;
+  double max = 0;
+};
+
+// a and b hold `channels` interleaved values per pixel; sizes must match.
+std::vector<ChannelDifference> compare_images(const std::vector<float>& a, const std::vector<float>& b,
+                                              int channels, double tolerance);
+
+}  // namespace vri

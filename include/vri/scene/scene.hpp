@@ -1,0 +1,40 @@
+#pragma once
+// Scene: everything one render needs (SPEC §8), loaded from a JSON file.
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "vri/camera/camera.hpp"
+#include "vri/integrators/method_spec.hpp"
+#include "vri/transfer/transfer_function.hpp"
+#include "vri/volume/grid_volume.hpp"
+
+namespace vri {
+
+struct Lighting {
+  bool enabled = false;
+  double ambient = 0.3, diffuse = 0.7, specular = 0.4, shininess = 32;  // SPEC §5 defaults
+  std::string mode = "sampled";
+};
+
+struct Scene {
+  GridVolume volume;
+  TransferFunction transfer_function;
+  CameraSpec camera;
+  Lighting lighting;
+  Vec3 background{0, 0, 0};
+  MethodSpec method;
+};
+
+// Loads a scene; relative paths inside it are relative to the scene file.
+// Every problem (missing file, bad JSON, wrong sizes, bad values) throws
+// vri::Error with one line naming the file and the key.
+Scene load_scene(const std::filesystem::path& path);
+Scene parse_scene(std::string_view json_text, const std::filesystem::path& base_dir,
+                  const std::string& source_name = "scene");
+
+// A transfer function on its own: {"points": ...} or {"opacity_points": ..., "unit_distance": u}.
+TransferFunction load_transfer_function(const std::filesystem::path& path);
+TransferFunction parse_transfer_function(std::string_view json_text, const std::string& source_name = "transfer function");
+
+}  // namespace vri

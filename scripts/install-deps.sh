@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs vri's build and test dependencies from Debian packages.
+# Skips apt entirely when everything is already installed.
+set -euo pipefail
+pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1g-dev
+      libtbb-dev libgtest-dev libbenchmark-dev python3 python3-numpy)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all packages present"
+  exit 0
+fi
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

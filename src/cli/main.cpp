@@ -1,0 +1,43 @@
+// vri: the command line. Every failure prints one line on stderr and exits
+// non-zero; outputs are written atomically, so a failure leaves no file.
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+#include <new>
+
+#include "commands.hpp"
+#include "vri/core/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"vri: volume rendering with measurable accuracy"};
+  app.require_subcommand(1);
+  vri::cli::Runner render = vri::cli::add_render_command(app);
+  vri::cli::Runner compare = vri::cli::add_compare_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return 0;
+  } catch (const CLI::CallForAllHelp&) {
+    std::cout << app.help("", CLI::AppFormatMode::All);
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    // Subcommand help comes through here too.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "vri: error: " << e.what() << " (see vri --help)\n";
+    return 2;
+  }
+  try {
+    if (app.got_subcommand("render")) return render();
+    if (app.got_subcommand("compare")) return compare();
+    return 2;
+  } catch (const vri::Error& e) {
+    std::cerr << "vri: error: " << e.what() << "\n";
+  } catch (const std::bad_alloc&) {
+    std::cerr << "vri: error: out of memory\n";
+  } catch (const std::exception& e) {
+    std::cerr << "vri: error: " << e.what() << "\n";
+  }
+  return 1;
+}

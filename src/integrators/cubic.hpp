@@ -1,0 +1,32 @@
+#pragma once
+// The trilinear field along a ray inside one cell, as a cubic in t, and the
+// few operations exact integration needs on it.
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "vri/volume/cell_traversal.hpp"
+#include "vri/volume/grid_volume.hpp"
+
+namespace vri {
+
+// c[0] + c[1] t + c[2] t^2 + c[3] t^3
+struct Cubic {
+  std::array<double, 4> c{};
+  double operator()(double t) const { return ((c[3] * t + c[2]) * t + c[1]) * t + c[0]; }
+  double derivative(double t) const { return (3 * c[3] * t + 2 * c[2]) * t + c[1]; }
+
+  // Critical points strictly inside (0, len), ascending; returns how many (0..2).
+  int critical_points(double len, double out[2]) const;
+
+  // The t in [lo, hi] where this cubic, monotone there, equals `value`; the
+  // caller guarantees value lies strictly between the end values.
+  double solve_monotone(double value, double lo, double hi) const;
+};
+
+// s(t) for t in [0, seg.tb - seg.ta] measured from seg.ta: substitute the
+// local coordinates x(t) = x0 + p t (and y, z) into the trilinear form
+// a + b x + c y + d z + e xy + f xz + g yz + h xyz of the cell's 8 samples.
+Cubic trilinear_along(const GridVolume& vol, const CellSegment& seg);
+
+}  // namespace vri

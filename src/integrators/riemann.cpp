@@ -1,0 +1,39 @@
+#include "vri/integrators/riemann.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "vri/core/error.hpp"
+
+namespace vri {
+
+RiemannIntegrator::RiemannIntegrator(const GridVolume& volume, const TransferFunction& tf,
+                                     double step)
+    : volume_(volume), tf_(tf) {
+  if (!(step >= 1e-4 && step <= 1e4))
+    throw Error("riemann: step must be in [1e-4, 1e4] voxel units, got " + std::to_string(step));
+  h_ = step * volume.voxel_unit();
+}
+
+Rgba RiemannIntegrator::integrate(const Ray& ray) const {
+  const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
+  if (!iv) return {0, 0, 0, 0};
+  const double len = iv->length();
+  const long long n = std::max(1LL, static_cast<long long>(std::ceil(len / h_)));
+  double T = 1, C[3] = {0, 0, 0};
+  for (long long k = 0; k < n; ++k) {
+    const double t = iv->t0 + k * h_;
+    const double hk = std::min(h_, iv->t1 - t);
+    if (!(hk > 0)) break;
+    const TfSample v = tf_(volume_.sample(ray.at(t)));
+    if (v.tau == 0) continue;
+    const double a = -std::expm1(-v.tau * hk);  // 1 - exp(-tau h), accurate for small tau h
+    C[0] += T * v.r * a;
+    C[1] += T * v.g * a;
+    C[2] += T * v.b * a;
+    T *= 1 - a;
+  }
+  return {C[0], C[1], C[2], 1 - T};
+}
+
+}  // namespace vri

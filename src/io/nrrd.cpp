@@ -1,0 +1,264 @@
+#include "vri/io/nrrd.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "gzip.hpp"
+#include "vri/core/error.hpp"
+#include "vri/io/file_io.hpp"
+
+namespace vri {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string trim(std::string s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  const auto e = s.find_last_not_of(" \t\r");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+ScalarType nrrd_type(const std::string& raw) {
+  static const std::map<std::string, ScalarType> names = {
+      {"uchar", ScalarType::UInt8},        {"unsigned char", ScalarType::UInt8},
+      {"uint8", ScalarType::UInt8},        {"uint8_t", ScalarType::UInt8},
+      {"signed char", ScalarType::Int8},   {"int8", ScalarType::Int8},
+      {"int8_t", ScalarType::Int8},        {"short", ScalarType::Int16},
+      {"short int", ScalarType::Int16},    {"signed short", ScalarType::Int16},
+      {"signed short int", ScalarType::Int16}, {"int16", ScalarType::Int16},
+      {"int16_t", ScalarType::Int16},      {"ushort", ScalarType::UInt16},
+      {"unsigned short", ScalarType::UInt16}, {"unsigned short int", ScalarType::UInt16},
+      {"uint16", ScalarType::UInt16},      {"uint16_t", ScalarType::UInt16},
+      {"int", ScalarType::Int32},          {"signed int", ScalarType::Int32},
+      {"int32", ScalarType::Int32},        {"int32_t", ScalarType::Int32},
+      {"uint", ScalarType::UInt32},        {"unsigned int", ScalarType::UInt32},
+      {"uint32", ScalarType::UInt32},      {"uint32_t", ScalarType::UInt32},
+      {"float", ScalarType::Float32},      {"double", ScalarType::Float64},
+  };
+  const auto it = names.find(lower(raw));
+  if (it == names.end()) throw Error("NRRD type '" + raw + "' is not supported");
+  return it->second;
+}
+
+std::vector<double> parse_numbers(const std::string& text, const std::string& field) {
+  std::vector<double> out;
+  std::string cleaned = text;
+  for (char& c : cleaned)
+    if (c == '(' || c == ')' || c == ',') c = ' ';
+  std::istringstream in(cleaned);
+  std::string tok;
+  while (in >> tok) {
+    if (lower(tok) == "none" || lower(tok) == "nan") {
+      out.push_back(std::nan(""));
+      continue;
+    }
+    double v;
+    const auto [p, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+    if (ec != std::errc() || p != tok.data() + tok.size())
+      throw Error("NRRD field '" + field + "' has a bad number '" + tok + "'");
+    out.push_back(v);
+  }
+  return out;
+}
+
+// Splits "(a,b,c) (d,e,f) none" into vectors (none -> empty).
+std::vector<std::vector<double>> parse_vectors(const std::string& text, const std::string& field) {
+  std::vector<std::vector<double>> out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (text[i] == '(') {
+      const auto close = text.find(')', i);
+      if (close == std::string::npos) throw Error("NRRD field '" + field + "' is malformed");
+      out.push_back(parse_numbers(text.substr(i + 1, close - i - 1), field));
+      i = close + 1;
+    } else if (lower(text.substr(i, 4)) == "none") {
+      out.emplace_back();
+      i += 4;
+    } else {
+      ++i;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+GridVolume read_nrrd(const fs::path& path) {
+  const auto file = read_file(path);
+  const std::string where = "NRRD '" + path.string() + "'";
+  if (file.size() < 8 || std::memcmp(file.data(), "NRRD000", 7) != 0)
+    throw Error(where + " does not start with the NRRD magic");
+
+  // Header: lines up to the first empty line (or the end of a detached header).
+  std::map<std::string, std::string> fields;
+  std::size_t pos = 0, data_start = file.size();
+  bool first = true;
+  while (pos < file.size()) {
+    const auto* begin = reinterpret_cast<const char*>(file.data()) + pos;
+    const auto* nl = static_cast<const char*>(std::memchr(begin, '\n', file.size() - pos));
+    const std::size_t len = nl ? std::size_t(nl - begin) : file.size() - pos;
+    std::string line(begin, len);
+    pos += len + (nl ? 1 : 0);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (first) { first = false; continue; }  // the magic line
+    if (line.empty()) { data_start = pos; break; }
+    if (line[0] == '#') continue;
+    if (line.find(":=") != std::string::npos) continue;  // key/value pairs: ignored
+    const auto colon = line.find(": ");
+    if (colon == std::string::npos) throw Error(where + " has a malformed header line '" + line + "'");
+    fields[lower(trim(line.substr(0, colon)))] = trim(line.substr(colon + 2));
+  }
+  auto field = [&](std::initializer_list<const char*> keys) -> const std::string* {
+    for (const char* k : keys)
+      if (auto it = fields.find(k); it != fields.end()) return &it->second;
+    return nullptr;
+  };
+  auto required = [&](const char* key) -> const std::string& {
+    const std::string* v = field({key});
+    if (!v) throw Error(where + " lacks the required field '" + key + "'");
+    return *v;
+  };
+
+  const ScalarType type = nrrd_type(required("type"));
+  const int dimension = std::atoi(required("dimension").c_str());
+  const auto sizes_d = parse_numbers(required("sizes"), "sizes");
+  if (int(sizes_d.size()) != dimension) throw Error(where + ": 'sizes' does not match 'dimension'");
+  int skip_axes = 0;
+  if (dimension == 4 && sizes_d[0] == 1) skip_axes = 1;  // a scalar axis of one value
+  else if (dimension != 3) throw Error(where + " is " + std::to_string(dimension) + "D; vri reads 3D scalar volumes");
+  std::array<std::int64_t, 3> dims{};
+  for (int a = 0; a < 3; ++a) {
+    const double s = sizes_d[a + skip_axes];
+    if (!(s >= 1) || s != std::floor(s)) throw Error(where + ": bad size in 'sizes'");
+    dims[a] = static_cast<std::int64_t>(s);
+  }
+  const std::uint64_t n = GridVolume::checked_sample_count(dims);
+
+  Vec3 spacing{1, 1, 1}, origin{0, 0, 0};
+  if (const auto* sp = field({"spacings"})) {
+    const auto v = parse_numbers(*sp, "spacings");
+    if (int(v.size()) != dimension) throw Error(where + ": 'spacings' does not match 'dimension'");
+    for (int a = 0; a < 3; ++a)
+      if (std::isfinite(v[a + skip_axes])) spacing[a] = std::abs(v[a + skip_axes]);
+  } else if (const auto* dirs = field({"space directions"})) {
+    const auto v = parse_vectors(*dirs, "space directions");
+    if (int(v.size()) != dimension) throw Error(where + ": 'space directions' does not match 'dimension'");
+    for (int a = 0; a < 3; ++a) {
+      const auto& d = v[a + skip_axes];
+      if (d.empty()) continue;
+      double len2 = 0;
+      for (double c : d) len2 += c * c;
+      spacing[a] = std::sqrt(len2);
+    }
+  }
+  if (const auto* so = field({"space origin"})) {
+    const auto v = parse_numbers(*so, "space origin");
+    if (v.size() != 3) throw Error(where + ": 'space origin' needs 3 values");
+    origin = {v[0], v[1], v[2]};
+  }
+
+  const std::string encoding = lower(required("encoding"));
+  Endian endian = Endian::Little;
+  if (const auto* e = field({"endian"})) {
+    if (lower(*e) == "big") endian = Endian::Big;
+    else if (lower(*e) != "little") throw Error(where + ": unknown endian '" + *e + "'");
+  }
+  long long byte_skip = 0, line_skip = 0;
+  if (const auto* b = field({"byte skip", "byteskip"})) byte_skip = std::atoll(b->c_str());
+  if (const auto* l = field({"line skip", "lineskip"})) line_skip = std::atoll(l->c_str());
+
+  // The data: attached after the header, or in a detached file.
+  std::vector<std::byte> detached;
+  std::span<const std::byte> data;
+  if (const auto* df = field({"data file", "datafile"})) {
+    if (df->rfind("LIST", 0) == 0 || df->find('%') != std::string::npos)
+      throw Error(where + ": multi-file data ('" + *df + "') is not supported");
+    fs::path dp(*df);
+    if (dp.is_relative()) dp = path.parent_path() / dp;
+    detached = read_file(dp);
+    data = detached;
+  } else {
+    if (data_start >= file.size() && n > 0) throw Error(where + " has no data after its header");
+    data = std::span(file).subspan(data_start);
+  }
+  for (long long l = 0; l < line_skip; ++l) {
+    const auto* p = static_cast<const std::byte*>(std::memchr(data.data(), '\n', data.size()));
+    if (!p) throw Error(where + ": 'line skip' runs past the data");
+    data = data.subspan(std::size_t(p - data.data()) + 1);
+  }
+
+  const std::uint64_t need = n * scalar_type_size(type);
+  std::vector<std::byte> inflated;
+  if (encoding == "raw") {
+    if (byte_skip == -1) {
+      if (data.size() < need) throw Error(where + " holds fewer bytes than its sizes need");
+      data = data.subspan(data.size() - need);
+    } else if (byte_skip > 0) {
+      if (std::uint64_t(byte_skip) > data.size()) throw Error(where + ": 'byte skip' runs past the data");
+      data = data.subspan(std::size_t(byte_skip));
+    }
+  } else if (encoding == "gzip" || encoding == "gz") {
+    inflated = gunzip(data, need + std::max<long long>(byte_skip, 0));
+    data = inflated;
+    if (byte_skip > 0) data = data.subspan(std::min<std::size_t>(data.size(), std::size_t(byte_skip)));
+  } else if (encoding == "ascii" || encoding == "text" || encoding == "txt") {
+    const std::string text(reinterpret_cast<const char*>(data.data()), data.size());
+    const auto v = parse_numbers(text, "data");
+    if (v.size() != n)
+      throw Error(where + " holds " + std::to_string(v.size()) + " ascii values, expected " + std::to_string(n));
+    std::vector<float> values(v.begin(), v.end());
+    GridVolume vol({int(dims[0]), int(dims[1]), int(dims[2])}, std::move(values), spacing, origin);
+    return vol;
+  } else {
+    throw Error(where + ": encoding '" + encoding + "' is not supported (raw, gzip, ascii)");
+  }
+  if (data.size() != need)
+    throw Error(where + " holds " + std::to_string(data.size()) + " data bytes, but its sizes and type need " +
+                std::to_string(need));
+  return GridVolume({int(dims[0]), int(dims[1]), int(dims[2])}, decode_samples(data, type, endian, n),
+                    spacing, origin);
+}
+
+void write_nrrd(const fs::path& path, const GridVolume& volume, NrrdEncoding encoding) {
+  const auto& d = volume.dims();
+  const auto& v = volume.values();
+  std::span<const std::byte> raw(reinterpret_cast<const std::byte*>(v.data()), v.size() * sizeof(float));
+  std::vector<std::byte> payload = encoding == NrrdEncoding::Gzip ? gzip(raw)
+                                                                  : std::vector<std::byte>(raw.begin(), raw.end());
+  const bool detached = path.extension() == ".nhdr";
+  std::ostringstream h;
+  h.precision(17);
+  h << "NRRD0004\n# written by vri\ntype: float\ndimension: 3\n"
+    << "sizes: " << d[0] << " " << d[1] << " " << d[2] << "\n"
+    << "spacings: " << volume.spacing().x << " " << volume.spacing().y << " " << volume.spacing().z << "\n"
+    << "space origin: (" << volume.origin().x << "," << volume.origin().y << "," << volume.origin().z << ")\n"
+    << "endian: little\nencoding: " << (encoding == NrrdEncoding::Gzip ? "gzip" : "raw") << "\n";
+  if (detached) {
+    const fs::path data_name =
+        path.stem().string() + (encoding == NrrdEncoding::Gzip ? ".raw.gz" : ".raw");
+    h << "data file: " << data_name.string() << "\n";
+    write_file_atomically(path.parent_path() / data_name, payload);
+    const std::string header = h.str();
+    write_file_atomically(path, std::as_bytes(std::span(header)));
+    return;
+  }
+  h << "\n";
+  const std::string header = h.str();
+  std::vector<std::byte> out(reinterpret_cast<const std::byte*>(header.data()),
+                             reinterpret_cast<const std::byte*>(header.data()) + header.size());
+  out.insert(out.end(), payload.begin(), payload.end());
+  write_file_atomically(path, out);
+}
+
+}  // namespace vri

@@ -1,0 +1,32 @@
+#include "vri/render/image_compare.hpp"
+
+#include <cmath>
+
+#include "vri/core/error.hpp"
+
+namespace vri {
+
+std::vector<ChannelDifference> compare_images(const std::vector<float>& a, const std::vector<float>& b,
+                                              int channels, double tolerance) {
+  if (a.size() != b.size()) throw Error("images differ in size");
+  if (channels <= 0 || a.size() % channels != 0) throw Error("bad channel count");
+  const std::size_t pixels = a.size() / channels;
+  std::vector<ChannelDifference> out(channels);
+  std::vector<double> sq(channels, 0.0);
+  std::vector<std::size_t> over(channels, 0);
+  for (std::size_t p = 0; p < pixels; ++p)
+    for (int c = 0; c < channels; ++c) {
+      const double d = std::abs(double(a[p * channels + c]) - double(b[p * channels + c]));
+      // NaN counts as over the tolerance and as the maximum.
+      if (!(d <= tolerance)) ++over[c];
+      sq[c] += d * d;
+      if (!(d <= out[c].max)) out[c].max = d;
+    }
+  for (int c = 0; c < channels; ++c) {
+    out[c].share_over = pixels ? double(over[c]) / pixels : 0.0;
+    out[c].rms = pixels ? std::sqrt(sq[c] / pixels) : 0.0;
+  }
+  return out;
+}
+
+}  // namespace vri

@@ -1,0 +1,31 @@
+#include "vri/render/renderer.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+
+#include "vri/core/error.hpp"
+
+namespace vri {
+
+Image render(const Camera& camera, const Integrator& integrator, const RenderOptions& options) {
+  if (options.threads < 0) throw Error("thread count must be >= 0");
+  if (options.tile_size <= 0) throw Error("tile size must be positive");
+  const int W = camera.width(), H = camera.height(), ts = options.tile_size;
+  const int tiles_x = (W + ts - 1) / ts, tiles_y = (H + ts - 1) / ts;
+  Image image(W, H);
+  auto render_tiles = [&](const tbb::blocked_range<int>& range) {
+    for (int t = range.begin(); t != range.end(); ++t) {
+      const int x0 = (t % tiles_x) * ts, y0 = (t / tiles_x) * ts;
+      for (int y = y0; y < std::min(H, y0 + ts); ++y)
+        for (int x = x0; x < std::min(W, x0 + ts); ++x) image.set(x, y, integrator.integrate(camera.ray(x, y)));
+    }
+  };
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  arena.execute([&] { tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), render_tiles); });
+  return image;
+}
+
+}  // namespace vri
