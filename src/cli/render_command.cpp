@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "commands.hpp"
 #include "vri/core/error.hpp"
@@ -43,7 +44,9 @@ int run_render(const RenderArgs& args) {
   if (args.height) scene.camera.height = *args.height;
 
   const Camera camera(scene.camera);
-  const auto integrator = make_integrator(scene.method, scene.volume, scene.transfer_function);
+  const auto integrator = std::visit(
+      [&](const auto& volume) { return make_integrator(scene.method, volume, scene.transfer_function); },
+      scene.volume);
   const auto start = std::chrono::steady_clock::now();
   const Image image = render(camera, *integrator, {.threads = args.threads});
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -4,9 +4,32 @@
 
 #include "vri/core/error.hpp"
 #include "vri/integrators/exact.hpp"
+#include "vri/integrators/mesh_exact.hpp"
+#include "vri/integrators/tet_raycast.hpp"
+#include "vri/tables/brute_slab_table.hpp"
 #include "vri/integrators/riemann.hpp"
 
 namespace vri {
+
+namespace {
+
+bool is_known(const std::string& name) {
+  const auto& known = known_method_names();
+  return std::find(known.begin(), known.end(), name) != known.end();
+}
+
+bool is_mesh_method(const std::string& name) {
+  return name == "pt" || name == "pt-cylindrical" || name == "tet-raycast";
+}
+
+[[noreturn]] void refuse(const std::string& name, const std::string& kind) {
+  if (is_known(name)) throw Error("method '" + name + "' is not implemented yet for " + kind);
+  std::string list;
+  for (const auto& n : known_method_names()) list += (list.empty() ? "" : ", ") + n;
+  throw Error("unknown method '" + name + "' (known: " + list + ")");
+}
+
+}  // namespace
 
 const std::vector<std::string>& known_method_names() {
   static const std::vector<std::string> names = {
@@ -19,12 +42,21 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
                                             const TransferFunction& tf) {
   if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step);
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance);
-  const auto& known = known_method_names();
-  if (std::find(known.begin(), known.end(), spec.name) != known.end())
-    throw Error("method '" + spec.name + "' is not implemented yet for regular grids");
-  std::string list;
-  for (const auto& n : known) list += (list.empty() ? "" : ", ") + n;
-  throw Error("unknown method '" + spec.name + "' (known: " + list + ")");
+  if (is_mesh_method(spec.name))
+    throw Error("method '" + spec.name + "' needs a tetrahedral mesh (volume {\"file\": \"x.vtk\"} or " +
+                "{\"builtin\": \"tetrahedralized\", ...})");
+  refuse(spec.name, "regular grids");
+}
+
+std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
+                                            const TransferFunction& tf) {
+  if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance);
+  if (spec.name == "tet-raycast")
+    return std::make_unique<TetRaycastIntegrator>(
+        mesh, std::make_unique<BruteSlabTable>(tf, spec.table_size, spec.length_samples, mesh.max_edge_length()));
+  if (!is_mesh_method(spec.name) && is_known(spec.name))
+    throw Error("method '" + spec.name + "' works on regular grids only; for a tetrahedral mesh use exact or tet-raycast");
+  refuse(spec.name, "tetrahedral meshes");
 }
 
 }  // namespace vri

@@ -11,6 +11,9 @@
 #include "vri/io/nrrd.hpp"
 #include "vri/io/raw_volume.hpp"
 #include "vri/io/volvis_dat.hpp"
+#include "vri/io/vtk_legacy.hpp"
+#include "vri/io/vtu.hpp"
+#include "vri/mesh/tetrahedralize.hpp"
 #include "vri/scene/scene.hpp"
 #include "vri/volume/builtin_volumes.hpp"
 
@@ -134,8 +137,8 @@ TransferFunction transfer_function_from(const json& j, const std::string& source
   throw Error(source + ": needs 'points' or 'opacity_points'");
 }
 
-GridVolume volume_from(const json& j, const fs::path& base, const std::string& source) {
-  const Reader r{source + ": volume"};
+GridVolume grid_volume_from(const json& j, const fs::path& base, const std::string& source) {
+  const Reader r{source};
   r.object(j);
   std::optional<GridVolume> vol;
   if (j.contains("builtin")) {
@@ -154,7 +157,7 @@ GridVolume volume_from(const json& j, const fs::path& base, const std::string& s
       if (seed < 0 || seed != std::floor(seed)) throw Error(r.ctx + ": 'seed' must be a non-negative integer");
       vol.emplace(random_field(dims_or({32, 32, 32}), static_cast<std::uint64_t>(seed)));
     } else
-      throw Error(r.ctx + ": unknown builtin '" + name + "' (known: marschner_lobb, sphere, random)");
+      throw Error(r.ctx + ": unknown builtin '" + name + "' (known: marschner_lobb, sphere, random, tetrahedralized)");
   } else {
     fs::path file = r.string(j, "file");
     if (file.is_relative()) file = base / file;
@@ -163,8 +166,6 @@ GridVolume volume_from(const json& j, const fs::path& base, const std::string& s
       vol.emplace(read_nrrd(file));
     } else if (ext == ".dat") {
       vol.emplace(read_volvis_dat(file));
-    } else if (ext == ".vtk" || ext == ".vtu") {
-      throw Error(r.ctx + ": tetrahedral meshes ('" + file.filename().string() + "') are not supported yet");
     } else {
       if (!j.contains("dims")) throw Error(r.ctx + ": a raw file needs 'dims'");
       const auto dims = r.dims(j, "dims");
@@ -182,6 +183,31 @@ GridVolume volume_from(const json& j, const fs::path& base, const std::string& s
   }
   if (j.contains("origin")) vol->set_origin(r.vec3(j, "origin"));
   return std::move(*vol);
+}
+
+// A mesh file (.vtk, .vtu) or {"builtin": "tetrahedralized", "grid": {...},
+// "tets_per_cell": 5|6}; anything else is a grid.
+Volume volume_from(const json& j, const fs::path& base, const std::string& source) {
+  const Reader r{source + ": volume"};
+  r.object(j);
+  const bool tetrahedralized = j.contains("builtin") && r.string(j, "builtin") == "tetrahedralized";
+  fs::path file = j.contains("file") && !j.contains("builtin") ? fs::path(r.string(j, "file")) : fs::path();
+  const std::string ext = file.extension().string();
+  if (!tetrahedralized && ext != ".vtk" && ext != ".vtu") return grid_volume_from(j, base, r.ctx);
+  for (const char* key : {"spacing", "origin", "dims"})
+    if (j.contains(key)) throw Error(r.ctx + ": '" + key + "' applies to grid volumes, not to meshes");
+  if (tetrahedralized) {
+    if (!j.contains("grid")) throw Error(r.ctx + ": 'tetrahedralized' needs a 'grid' volume to split");
+    const Reader g{r.ctx + ": grid"};
+    return tetrahedralize(grid_volume_from(g.object(j.at("grid")), base, g.ctx), r.integer(j, "tets_per_cell", 5));
+  }
+  if (file.is_relative()) file = base / file;
+  const std::string scalars = r.string(j, "scalars", "");
+  try {
+    return ext == ".vtk" ? read_vtk_legacy(file, scalars) : read_vtu(file, scalars);
+  } catch (const Error& e) {
+    throw Error(r.ctx + ": " + e.what());
+  }
 }
 
 CameraSpec camera_from(const json& j, const std::string& source) {
@@ -230,6 +256,7 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     method.step = m.number(mj, "step", method.step);
     method.tolerance = m.number(mj, "tolerance", method.tolerance);
     method.table_size = m.integer(mj, "table_size", method.table_size);
+    method.length_samples = m.integer(mj, "length_samples", method.length_samples);
   }
 
   Lighting lighting;
@@ -261,7 +288,7 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     tf.emplace(transfer_function_from(tfj, source + ": transfer_function"));
   }
 
-  GridVolume volume = volume_from(j.at("volume"), base, source);
+  Volume volume = volume_from(j.at("volume"), base, source);
   return Scene{std::move(volume), std::move(*tf), camera, lighting, background, method};
 }
 

@@ -12,6 +12,7 @@
 // The ray stops once the transmittance falls below tolerance/10, which bounds
 // what is dropped (alpha and colour) by tolerance/10.
 #include "vri/integrators/integrator.hpp"
+#include "vri/integrators/piece_integrator.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/cell_traversal.hpp"
 #include "vri/volume/grid_volume.hpp"
@@ -25,19 +26,15 @@ class ExactIntegrator final : public Integrator {
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "exact"; }
 
-  struct Accumulator {
-    double T = 1;
-    double C[3] = {0, 0, 0};
-  };
+  using Accumulator = PieceIntegrator::Accumulator;
   // Integrates one cell piece into `acc`; error_per_length is the colour error
   // allowed per unit of ray length. Public for tests of single cells.
   void integrate_cell(const CellSegment& seg, double error_per_length, Accumulator& acc) const;
 
  private:
   const GridVolume& volume_;
-  const TransferFunction& tf_;
+  PieceIntegrator pieces_;
   double tolerance_;
-  std::vector<int> opaque_prefix_;  // opaque_prefix_[i]: non-transparent segments before i
 };
 
 }  // namespace vri

@@ -6,6 +6,7 @@
 
 #include "vri/integrators/integrator.hpp"
 #include "vri/integrators/method_spec.hpp"
+#include "vri/mesh/tet_mesh.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -17,6 +18,10 @@ const std::vector<std::string>& known_method_names();
 // Throws vri::Error for an unknown method, one not yet implemented, or bad
 // parameters. The integrator refers to `volume` and `tf`: keep them alive.
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
+                                            const TransferFunction& tf);
+
+// The same over a tetrahedral mesh (exact, tet-raycast); a grid-only method is refused.
+std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
                                             const TransferFunction& tf);
 
 }  // namespace vri

@@ -10,6 +10,7 @@ struct MethodSpec {
   double step = 1.0;         // riemann, preint*: voxel units
   double tolerance = 1e-6;   // exact, adaptive
   int table_size = 256;      // preint*, pt*
+  int length_samples = 64;   // pt, tet-raycast: lengths in the (l, s_f, s_b) table
 };
 
 }  // namespace vri

@@ -3,9 +3,11 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <variant>
 
 #include "vri/camera/camera.hpp"
 #include "vri/integrators/method_spec.hpp"
+#include "vri/mesh/tet_mesh.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -17,8 +19,11 @@ struct Lighting {
   std::string mode = "sampled";
 };
 
+// What a scene renders: a regular grid (SPEC §1) or a tetrahedral mesh (§2).
+using Volume = std::variant<GridVolume, TetMesh>;
+
 struct Scene {
-  GridVolume volume;
+  Volume volume;
   TransferFunction transfer_function;
   CameraSpec camera;
   Lighting lighting;

@@ -1,0 +1,27 @@
+#pragma once
+// TetRaycastIntegrator (SPEC §9 `tet-raycast`): the cell-to-cell walk of the
+// mesh `exact` (TetWalk), with each tetrahedron's piece looked up in an
+// (l, s_f, s_b) table instead of integrated (Roettger & Ertl 2002, Sec. 3:
+// the segment inside a tetrahedron is fully described by s_f, s_b and l), and
+// composited front to back: C += T C_seg, T *= 1 - alpha_seg.
+#include <memory>
+
+#include "vri/integrators/integrator.hpp"
+#include "vri/mesh/tet_walk.hpp"
+#include "vri/tables/slab_table.hpp"
+
+namespace vri {
+
+class TetRaycastIntegrator final : public Integrator {
+ public:
+  // The table must cover segments up to mesh.max_edge_length() (vri::Error otherwise).
+  TetRaycastIntegrator(const TetMesh& mesh, std::unique_ptr<const SlabTable> table);
+  Rgba integrate(const Ray& ray) const override;
+  std::string_view name() const override { return "tet-raycast"; }
+
+ private:
+  TetWalk walk_;
+  std::unique_ptr<const SlabTable> table_;
+};
+
+}  // namespace vri

@@ -1,0 +1,115 @@
+#include "vtk_values.hpp"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <climits>
+#include <map>
+
+#include "vri/core/error.hpp"
+
+namespace vri::vtk {
+
+std::optional<Num> parse_num(const std::string& name) {
+  static const std::map<std::string, Num> names = {
+      {"char", Num::Int8},           {"signed_char", Num::Int8},  {"unsigned_char", Num::UInt8},
+      {"short", Num::Int16},         {"unsigned_short", Num::UInt16}, {"int", Num::Int32},
+      {"unsigned_int", Num::UInt32}, {"long", Num::Int64},        {"unsigned_long", Num::UInt64},
+      {"vtktypeint64", Num::Int64},  {"vtktypeuint64", Num::UInt64}, {"vtkIdType", Num::Int64},
+      {"float", Num::Float32},       {"double", Num::Float64},    {"Int8", Num::Int8},
+      {"UInt8", Num::UInt8},         {"Int16", Num::Int16},       {"UInt16", Num::UInt16},
+      {"Int32", Num::Int32},         {"UInt32", Num::UInt32},     {"Int64", Num::Int64},
+      {"UInt64", Num::UInt64},       {"Float32", Num::Float32},   {"Float64", Num::Float64}};
+  const auto it = names.find(name);
+  if (it == names.end()) return std::nullopt;
+  return it->second;
+}
+
+std::size_t num_size(Num type) {
+  switch (type) {
+    case Num::Int8: case Num::UInt8: return 1;
+    case Num::Int16: case Num::UInt16: return 2;
+    case Num::Int32: case Num::UInt32: case Num::Float32: return 4;
+    default: return 8;
+  }
+}
+
+namespace {
+
+template <class T>
+double load(const std::byte* p, bool swap) {
+  unsigned char b[sizeof(T)];
+  std::memcpy(b, p, sizeof(T));
+  if (swap)
+    for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
+  T v;
+  std::memcpy(&v, b, sizeof(T));
+  return static_cast<double>(v);
+}
+
+}  // namespace
+
+std::vector<double> decode(std::span<const std::byte> bytes, Num type, std::size_t count, bool big_endian) {
+  const std::size_t size = num_size(type);
+  if (bytes.size() / size < count)
+    throw Error("binary data ends early: " + std::to_string(count) + " values need " +
+                std::to_string(count * size) + " bytes, " + std::to_string(bytes.size()) + " left");
+  const bool swap = big_endian != (std::endian::native == std::endian::big);
+  std::vector<double> out(count);
+  const std::byte* p = bytes.data();
+  for (std::size_t i = 0; i < count; ++i, p += size) {
+    switch (type) {
+      case Num::Int8: out[i] = load<std::int8_t>(p, swap); break;
+      case Num::UInt8: out[i] = load<std::uint8_t>(p, swap); break;
+      case Num::Int16: out[i] = load<std::int16_t>(p, swap); break;
+      case Num::UInt16: out[i] = load<std::uint16_t>(p, swap); break;
+      case Num::Int32: out[i] = load<std::int32_t>(p, swap); break;
+      case Num::UInt32: out[i] = load<std::uint32_t>(p, swap); break;
+      case Num::Int64: out[i] = load<std::int64_t>(p, swap); break;
+      case Num::UInt64: out[i] = load<std::uint64_t>(p, swap); break;
+      case Num::Float32: out[i] = load<float>(p, swap); break;
+      case Num::Float64: out[i] = load<double>(p, swap); break;
+    }
+  }
+  return out;
+}
+
+std::vector<std::int64_t> to_indices(const std::vector<double>& values, const std::string& what) {
+  std::vector<std::int64_t> out(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double v = values[i];
+    if (!(v >= 0 && v < 9.0e15) || v != std::floor(v))
+      throw Error(what + " entry " + std::to_string(i) + " is not a valid index (" + std::to_string(v) + ")");
+    out[i] = static_cast<std::int64_t>(v);
+  }
+  return out;
+}
+
+std::vector<TetMesh::Tet> tets_from_cells(const std::vector<std::int64_t>& connectivity,
+                                          const std::vector<std::int64_t>& offsets,
+                                          const std::vector<std::int64_t>& types) {
+  if (offsets.size() != types.size() + 1) throw Error("cell offsets and cell types disagree in count");
+  std::vector<TetMesh::Tet> tets(types.size());
+  for (std::size_t c = 0; c < types.size(); ++c) {
+    const std::int64_t a = offsets[c], b = offsets[c + 1];
+    if (types[c] != 10)
+      throw Error("cell " + std::to_string(c) + " has VTK type " + std::to_string(types[c]) +
+                  "; only tetrahedra (type 10) are supported");
+    if (b - a != 4 || a < 0 || std::size_t(b) > connectivity.size())
+      throw Error("cell " + std::to_string(c) + " is a tetrahedron with " + std::to_string(b - a) + " points");
+    for (int k = 0; k < 4; ++k) {
+      if (connectivity[a + k] > INT32_MAX)
+        throw Error("cell " + std::to_string(c) + " refers to point " + std::to_string(connectivity[a + k]));
+      tets[c][k] = static_cast<std::int32_t>(connectivity[a + k]);
+    }
+  }
+  return tets;
+}
+
+std::vector<Vec3> points_from(const std::vector<double>& xyz) {
+  std::vector<Vec3> points(xyz.size() / 3);
+  for (std::size_t i = 0; i < points.size(); ++i) points[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  return points;
+}
+
+}  // namespace vri::vtk
