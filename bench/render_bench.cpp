@@ -27,14 +27,14 @@ void render_with(benchmark::State& state, const vri::Integrator& integrator) {
 }
 
 void BM_Riemann(benchmark::State& state) {
-  const vri::RiemannIntegrator riemann(neghip().volume, neghip().transfer_function, state.range(1) / 100.0);
+  const vri::RiemannIntegrator riemann(neghip().grid(), neghip().transfer_function, state.range(1) / 100.0);
   render_with(state, riemann);
 }
 // args: threads, step in hundredths of a voxel
 BENCHMARK(BM_Riemann)->Args({1, 100})->Args({2, 100})->Args({2, 50})->Args({2, 10})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_Exact(benchmark::State& state) {
-  const vri::ExactIntegrator exact(neghip().volume, neghip().transfer_function, std::pow(10.0, -double(state.range(1))));
+  const vri::ExactIntegrator exact(neghip().grid(), neghip().transfer_function, std::pow(10.0, -double(state.range(1))));
   render_with(state, exact);
 }
 // args: threads, -log10(tolerance)

@@ -40,10 +40,10 @@ TEST(Riemann, ConvergesToExactAtFirstOrder) {
   Scene scene = load_scene(test::source_path("scenes/neghip.json"));
   scene.camera.width = scene.camera.height = 24;
   const Camera cam(scene.camera);
-  const Image ref = render(cam, ExactIntegrator(scene.volume, scene.transfer_function, 1e-8));
+  const Image ref = render(cam, ExactIntegrator(scene.grid(), scene.transfer_function, 1e-8));
   std::vector<double> err;
   for (double h : {0.2, 0.1, 0.05, 0.025}) {
-    const Image img = render(cam, RiemannIntegrator(scene.volume, scene.transfer_function, h));
+    const Image img = render(cam, RiemannIntegrator(scene.grid(), scene.transfer_function, h));
     double sum = 0;
     for (std::size_t i = 0; i < img.data().size(); ++i) sum += std::abs(img.data()[i] - ref.data()[i]);
     err.push_back(sum);

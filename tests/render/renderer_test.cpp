@@ -18,8 +18,8 @@ TEST(Renderer, SameBytesWithAnyThreadCountAndTileSize) {
   scene.camera.width = 45;
   scene.camera.height = 37;
   const Camera cam(scene.camera);
-  const ExactIntegrator exact(scene.volume, scene.transfer_function, 1e-5);
-  const RiemannIntegrator riemann(scene.volume, scene.transfer_function, 0.7);
+  const ExactIntegrator exact(scene.grid(), scene.transfer_function, 1e-5);
+  const RiemannIntegrator riemann(scene.grid(), scene.transfer_function, 0.7);
   for (const Integrator* integ : {static_cast<const Integrator*>(&exact), static_cast<const Integrator*>(&riemann)}) {
     const Image one = render(cam, *integ, {.threads = 1});
     double alpha_sum = 0;

@@ -20,9 +20,9 @@ TEST(SceneLoader, ReadsEveryKeyWithDefaults) {
     "method": {"name": "riemann", "step": 0.25, "tolerance": 1e-3, "table_size": 128},
     "extra_key_for_the_future": 1})",
                               ".");
-  EXPECT_EQ(s.volume.dims(), (std::array<int, 3>{9, 9, 9}));
-  EXPECT_DOUBLE_EQ(s.volume.spacing().x, 0.5);
-  EXPECT_DOUBLE_EQ(s.volume.origin().z, 3);
+  EXPECT_EQ(s.grid().dims(), (std::array<int, 3>{9, 9, 9}));
+  EXPECT_DOUBLE_EQ(s.grid().spacing().x, 0.5);
+  EXPECT_DOUBLE_EQ(s.grid().origin().z, 3);
   EXPECT_NEAR(s.transfer_function(0.5).tau, std::log(2.0) / 2, 1e-15);
   EXPECT_DOUBLE_EQ(s.camera.fov_y, 45);
   EXPECT_DOUBLE_EQ(s.camera.up.y, 1);  // default up
@@ -35,7 +35,7 @@ TEST(SceneLoader, ReadsEveryKeyWithDefaults) {
 
 TEST(SceneLoader, PathsAreRelativeToTheSceneFile) {
   const Scene s = load_scene(test::source_path("scenes/bucky.json"));
-  EXPECT_EQ(s.volume.dims(), (std::array<int, 3>{32, 32, 32}));
+  EXPECT_EQ(s.grid().dims(), (std::array<int, 3>{32, 32, 32}));
   EXPECT_EQ(s.transfer_function.points().size(), 5u);
 }
 
@@ -43,8 +43,8 @@ TEST(SceneLoader, EveryBundledSceneLoads) {
   for (const char* name : {"neghip", "fuel", "bucky", "silicium", "hydrogen_atom", "marschner_lobb", "tooth", "engine",
                            "bonsai", "boston_teapot"}) {
     const Scene s = load_scene(test::source_path(std::string("scenes/") + name + ".json"));
-    EXPECT_GT(s.volume.max_value(), s.volume.min_value()) << name;
-    EXPECT_NO_THROW(make_integrator(s.method, s.volume, s.transfer_function)) << name;
+    EXPECT_GT(s.grid().max_value(), s.grid().min_value()) << name;
+    EXPECT_NO_THROW(make_integrator(s.method, s.grid(), s.transfer_function)) << name;
   }
 }
 
@@ -85,7 +85,7 @@ TEST(SceneLoader, RefusesBadScenesWithOneClearLine) {
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "../data/bucky_32x32x32_uint8.raw", "dims": [32, 32, 32], "type": "complex"}})",
                  "unknown sample type");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "nowhere.raw", "dims": [2, 2, 2]}})", "cannot open");
-  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "mesh.vtk"}})", "not supported yet");
+  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "mesh.vtk"}})", "cannot open");
   expect_refused("{" + vol + ", " + kCamera + R"(, "transfer_function": {"file": "missing_tf.json"}})", "cannot open");
 }
 
@@ -94,12 +94,12 @@ TEST(MakeIntegrator, RefusesUnknownAndUnimplementedMethods) {
     "transfer_function": {"points": [[0, 1, 1, 1, 0.1]]}, )" + kCamera + "}", ".");
   MethodSpec m;
   m.name = "magic";
-  EXPECT_THROW(make_integrator(m, s.volume, s.transfer_function), Error);
+  EXPECT_THROW(make_integrator(m, s.grid(), s.transfer_function), Error);
   m.name = "riemann";
   m.step = 0;
-  EXPECT_THROW(make_integrator(m, s.volume, s.transfer_function), Error);
+  EXPECT_THROW(make_integrator(m, s.grid(), s.transfer_function), Error);
   m.name = "exact";
-  EXPECT_EQ(make_integrator(m, s.volume, s.transfer_function)->name(), "exact");
+  EXPECT_EQ(make_integrator(m, s.grid(), s.transfer_function)->name(), "exact");
 }
 
 }  // namespace

@@ -29,6 +29,10 @@ struct Scene {
   Lighting lighting;
   Vec3 background{0, 0, 0};
   MethodSpec method;
+
+  // The volume as one kind; vri::Error naming both kinds if it is the other.
+  const GridVolume& grid() const;
+  const TetMesh& mesh() const;
 };
 
 // Loads a scene; relative paths inside it are relative to the scene file.
