@@ -1,0 +1,57 @@
+#include "vri/io/vtu.hpp"
+
+#include <gtest/gtest.h>
+
+#include "io/mesh_io_test_support.hpp"
+#include "test_support.hpp"
+#include "vri/io/vtk_legacy.hpp"
+
+namespace vri {
+namespace {
+
+// Every .vtu flavour VTK 9.1 writes (tools/make_mesh_fixtures.py) reads back
+// as the bundled legacy mesh it was made from.
+TEST(Vtu, EveryEncodingReadsBackIdentically) {
+  const TetMesh ref = read_vtk_legacy(test::source_path("data/tetra_mesh_small_ascii.vtk"));
+  for (const char* name : {"ascii.vtu", "base64.vtu", "base64_zlib_uint64.vtu", "appended_raw.vtu",
+                           "appended_raw_zlib.vtu", "appended_base64_zlib_uint64.vtu"}) {
+    const auto path = test::source_path(std::string("tests/data/mesh/") + name);
+    const TetMesh m = read_vtu(path);
+    ASSERT_EQ(m.size(), ref.size()) << name;
+    EXPECT_EQ(m.tets(), ref.tets()) << name;
+    EXPECT_EQ(m.scalars(), ref.scalars()) << name;
+    for (std::size_t i = 0; i < m.points().size(); ++i)
+      EXPECT_FLOAT_EQ(float(m.points()[i].x), float(ref.points()[i].x)) << name;
+    const TetMesh h = read_vtu(path, "height");
+    for (std::size_t i = 0; i < h.points().size(); ++i) EXPECT_FLOAT_EQ(h.scalars()[i], float(h.points()[i].z)) << name;
+  }
+}
+
+std::string vtu(const std::string& attrs, const std::string& types, const std::string& scalars) {
+  return R"(<?xml version="1.0"?><VTKFile type="UnstructuredGrid" )" + attrs + R"(>
+<UnstructuredGrid><Piece NumberOfPoints="4" NumberOfCells="1">
+<PointData><DataArray type="Float32" Name="s" format="ascii">)" + scalars + R"(</DataArray></PointData>
+<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0 0 0 1</DataArray></Points>
+<Cells><DataArray type="Int32" Name="connectivity" format="ascii">0 1 2 3</DataArray>
+<DataArray type="Int32" Name="offsets" format="ascii">4</DataArray>
+<DataArray type="UInt8" Name="types" format="ascii">)" + types + R"(</DataArray></Cells>
+</Piece></UnstructuredGrid></VTKFile>)";
+}
+
+TEST(Vtu, RefusesBadFilesWithOneLine) {
+  auto parse = [](const std::string& text, const std::string& scalars = "") {
+    return [=] { parse_vtu(test::bytes_of(text), scalars, "m.vtu"); };
+  };
+  EXPECT_EQ(parse_vtu(test::bytes_of(vtu("", "10", "0 1 2 3")), "", "m.vtu").size(), 1u);
+  test::expect_mesh_error(parse(vtu("", "12", "0 1 2 3")), "m.vtu: cell 0 has VTK type 12");
+  test::expect_mesh_error(parse(vtu("", "10", "0 1 nan 3")), "non-finite scalar");
+  test::expect_mesh_error(parse(vtu("", "10", "0 1")), "fewer than 4 values");
+  test::expect_mesh_error(parse(vtu("", "10", "0 1 2 3"), "t"), "no point scalars named 't' (the file has: s)");
+  test::expect_mesh_error(parse(vtu(R"(compressor="vtkLZ4DataCompressor")", "10", "0 1 2 3")),
+                          "unsupported compressor");
+  test::expect_mesh_error(parse(R"(<VTKFile type="ImageData">)"), "only UnstructuredGrid");
+  test::expect_mesh_error(parse("<VTKFile type=\"UnstructuredGrid\"><Piece NumberOfPoints=\"4\""), "unterminated");
+}
+
+}  // namespace
+}  // namespace vri
