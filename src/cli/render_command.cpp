@@ -13,6 +13,7 @@
 #include "vri/integrators/make_integrator.hpp"
 #include "vri/io/npy.hpp"
 #include "vri/io/png.hpp"
+#include "vri/projected/projected_tetrahedra.hpp"
 #include "vri/render/renderer.hpp"
 #include "vri/scene/scene.hpp"
 
@@ -44,15 +45,22 @@ int run_render(const RenderArgs& args) {
   if (args.height) scene.camera.height = *args.height;
 
   const Camera camera(scene.camera);
-  const auto integrator = std::visit(
-      [&](const auto& volume) { return make_integrator(scene.method, volume, scene.transfer_function); },
-      scene.volume);
+  // `pt` projects whole tetrahedra; every other method integrates ray by ray.
+  const bool projected = scene.method.name == "pt";
+  std::unique_ptr<Integrator> integrator;
+  std::unique_ptr<SlabTable> table;
+  if (projected) table = make_slab_table(scene.method, scene.mesh(), scene.transfer_function);
+  else
+    integrator = std::visit(
+        [&](const auto& volume) { return make_integrator(scene.method, volume, scene.transfer_function); },
+        scene.volume);
   const auto start = std::chrono::steady_clock::now();
-  const Image image = render(camera, *integrator, {.threads = args.threads});
+  const Image image = projected ? render_projected(camera, scene.mesh(), *table, {.threads = args.threads})
+                                : render(camera, *integrator, {.threads = args.threads});
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (ext == ".npy") write_npy(out, image);
   else write_png(out, image, scene.background);
-  std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '" << integrator->name()
+  std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '" << (projected ? "pt" : integrator->name())
             << "' in " << seconds << " s -> " << args.output << "\n";
   return 0;
 }

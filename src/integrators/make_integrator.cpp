@@ -51,12 +51,15 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
                                             const TransferFunction& tf) {
   if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance);
-  if (spec.name == "tet-raycast")
-    return std::make_unique<TetRaycastIntegrator>(
-        mesh, std::make_unique<BruteSlabTable>(tf, spec.table_size, spec.length_samples, mesh.max_edge_length()));
+  if (spec.name == "tet-raycast") return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf));
+  if (spec.name == "pt") throw Error("method 'pt' projects whole tetrahedra; it has no per-ray integrator");
   if (!is_mesh_method(spec.name) && is_known(spec.name))
     throw Error("method '" + spec.name + "' works on regular grids only; for a tetrahedral mesh use exact or tet-raycast");
   refuse(spec.name, "tetrahedral meshes");
+}
+
+std::unique_ptr<SlabTable> make_slab_table(const MethodSpec& spec, const TetMesh& mesh, const TransferFunction& tf) {
+  return std::make_unique<BruteSlabTable>(tf, spec.table_size, spec.length_samples, mesh.max_edge_length());
 }
 
 }  // namespace vri

@@ -7,6 +7,7 @@
 #include "vri/integrators/integrator.hpp"
 #include "vri/integrators/method_spec.hpp"
 #include "vri/mesh/tet_mesh.hpp"
+#include "vri/tables/slab_table.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -20,8 +21,13 @@ const std::vector<std::string>& known_method_names();
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
                                             const TransferFunction& tf);
 
-// The same over a tetrahedral mesh (exact, tet-raycast); a grid-only method is refused.
+// The same over a tetrahedral mesh (exact, tet-raycast); a grid-only method is refused,
+// and so is `pt`, which renders whole images (render_projected), not rays.
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
                                             const TransferFunction& tf);
+
+// The (l, s_f, s_b) table the mesh methods use: table_size scalars a side,
+// length_samples lengths up to the mesh's longest edge.
+std::unique_ptr<SlabTable> make_slab_table(const MethodSpec& spec, const TetMesh& mesh, const TransferFunction& tf);
 
 }  // namespace vri

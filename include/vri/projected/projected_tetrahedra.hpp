@@ -1,0 +1,36 @@
+#pragma once
+// Projected tetrahedra (SPEC §9 `pt`): Shirley & Tuchman (1990) with the
+// pre-integrated (l, s_f, s_b) table of Roettger & Ertl (2002, Sec. 2-3).
+// Each tetrahedron is projected and split (classify()) into 3 or 4 triangles
+// around its thick vertex, which carries the front and back points of the
+// longest ray through the tetrahedron, while the silhouette vertices carry
+// front = back (l = 0). A software rasteriser interpolates, per pixel centre,
+// the front and back points and scalars - perspective-correct: the weights of
+// the screen-space barycentrics are divided by each vertex's view depth, the
+// front and back triangles separately - so that l = |back - front|, s_f and
+// s_b are those of the pixel's ray; then it looks them up in the table.
+//
+// Visibility: instead of a global cell order (MPVO and its non-convex
+// heuristics), the fragments of each pixel are sorted by the view depth of
+// their front point. Tetrahedra do not overlap, so along one ray this is the
+// exact order, for convex and non-convex meshes alike. The image is split
+// into tiles, each rasterised and composited (front to back, equal to back to
+// front "over") by one thread from the tetrahedra binned to it; fragments tie
+// on (depth, tetrahedron index), so the bytes do not depend on the thread count.
+// Shared edges follow a top-left fill rule on edge functions computed in a
+// canonical vertex order, so each pixel centre is covered once per tetrahedron
+// layer. Tetrahedra with a vertex behind the eye (or the orthographic eye
+// plane) are not drawn: keep the eye outside the mesh.
+#include "vri/camera/camera.hpp"
+#include "vri/mesh/tet_mesh.hpp"
+#include "vri/render/image.hpp"
+#include "vri/render/renderer.hpp"
+#include "vri/tables/slab_table.hpp"
+
+namespace vri {
+
+// The table must cover mesh.max_edge_length() (vri::Error otherwise).
+Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTable& table,
+                       const RenderOptions& options = {});
+
+}  // namespace vri
