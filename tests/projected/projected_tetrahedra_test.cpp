@@ -1,0 +1,135 @@
+#include "vri/projected/projected_tetrahedra.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "mesh/mesh_test_support.hpp"
+#include "vri/core/error.hpp"
+#include "vri/integrators/mesh_exact.hpp"
+#include "vri/integrators/tet_raycast.hpp"
+#include "vri/io/vtk_legacy.hpp"
+#include "vri/tables/brute_slab_table.hpp"
+
+namespace vri {
+namespace {
+
+double wave(double x, double y, double z) { return 0.5 + 0.4 * std::sin(0.9 * x + 0.5 * y) * std::cos(0.7 * z); }
+
+const TransferFunction& tf() {
+  static const TransferFunction t({{0, 0, 0, 1, 0}, {0.3, 0, 1, 0, 0.2}, {0.6, 1, 1, 0, 1.2}, {1, 1, 0, 0, 0.4}});
+  return t;
+}
+
+struct Errors {
+  double vs_raycast = 0, vs_exact = 0, alpha = 0;
+};
+
+// pt against tet-raycast with the same table (the same segments, so they
+// agree to rounding) and against exact (the table's own error).
+Errors compare(const TetMesh& mesh, const TransferFunction& t, CameraSpec cs) {
+  cs.width = cs.height = 40;
+  const Camera cam(cs);
+  auto table = std::make_unique<BruteSlabTable>(t, 64, 16, mesh.max_edge_length());
+  const Image pt = render_projected(cam, mesh, *table, {.threads = 2});
+  const TetRaycastIntegrator raycast(mesh, std::move(table));
+  const MeshExactIntegrator exact(mesh, t, 1e-8);
+  Errors e;
+  for (int y = 0; y < 40; ++y)
+    for (int x = 0; x < 40; ++x) {
+      const Ray r = cam.ray(x, y);
+      const Rgba a = raycast.integrate(r), b = exact.integrate(r);
+      e.alpha += b[3];
+      for (int c = 0; c < 4; ++c) {
+        e.vs_raycast = std::max(e.vs_raycast, std::abs(pt.pixel(x, y)[c] - a[c]));
+        e.vs_exact = std::max(e.vs_exact, std::abs(pt.pixel(x, y)[c] - b[c]));
+      }
+    }
+  return e;
+}
+
+CameraSpec view(Vec3 eye, Vec3 target, bool ortho) {
+  CameraSpec cs;
+  cs.eye = eye;
+  cs.target = target;
+  if (ortho) {
+    cs.projection = Projection::Orthographic;
+    cs.ortho_height = 12;
+  }
+  return cs;
+}
+
+TEST(ProjectedTetrahedra, MatchesRaycastOnAConvexMesh) {
+  const TetMesh mesh = tetrahedralize(test::volume_from({6, 6, 6}, wave), 5);
+  for (bool ortho : {false, true}) {
+    const Errors e = compare(mesh, tf(), view({13, -8, 10}, {2.5, 2.5, 2.5}, ortho));
+    EXPECT_GT(e.alpha, 100);
+    EXPECT_LT(e.vs_raycast, 1e-5) << "ortho " << ortho;
+    EXPECT_LT(e.vs_exact, 0.02) << "ortho " << ortho;
+  }
+}
+
+TEST(ProjectedTetrahedra, MatchesRaycastOnANonConvexMesh) {
+  // A tunnel, a notch and a detached block: several layers per pixel, with gaps.
+  const TetMesh mesh = test::carved_mesh(7, wave, [](double x, double y, double z) {
+    return !(x > 2 && x < 4 && y > 2 && y < 4) && !(z > 4 && y < 2) && !(x > 4 && x < 5);
+  }, 6);
+  for (bool ortho : {false, true}) {
+    const Errors e = compare(mesh, tf(), view({-9, 14, 12}, {3, 3, 3}, ortho));
+    EXPECT_GT(e.alpha, 100);
+    EXPECT_LT(e.vs_raycast, 1e-5) << "ortho " << ortho;
+    EXPECT_LT(e.vs_exact, 0.02) << "ortho " << ortho;
+  }
+}
+
+TEST(ProjectedTetrahedra, MatchesRaycastOnTheBundledMesh) {
+  const TetMesh mesh = read_vtk_legacy(test::source_path("data/tetra_mesh_small_ascii.vtk"));
+  const TransferFunction t({{0, 0, 0, 1, 0.02}, {2, 0, 1, 0, 0.1}, {4, 1, 0, 0, 0.3}});
+  const Errors e = compare(mesh, t, view({30, 20, 25}, {0, 0, 0}, false));
+  EXPECT_LT(e.vs_raycast, 1e-5);
+}
+
+// Visibility order: two slabs, red in front of blue seen from one side and
+// blue in front of red from the other; nearly opaque, so the order decides.
+TEST(ProjectedTetrahedra, NearerSlabCoversTheFartherOne) {
+  const TetMesh mesh = test::carved_mesh(5, [](double x, double, double) { return x < 2 ? 0.0 : 1.0; },
+                                         [](double x, double, double) { return x < 1 || x > 3; });
+  const TransferFunction t({{0, 1, 0, 0, 8}, {0.01, 0, 0, 0, 0}, {0.99, 0, 0, 0, 0}, {1, 0, 0, 1, 8}});
+  const BruteSlabTable table(t, 32, 8, mesh.max_edge_length());
+  for (double side : {-1.0, 1.0}) {
+    CameraSpec cs = view({2 + 10 * side, 2.1, 2.2}, {2, 2.1, 2.2}, true);
+    cs.ortho_height = 2;
+    cs.width = cs.height = 8;
+    const Image img = render_projected(Camera(cs), mesh, table, {.threads = 2});
+    const float* p = img.pixel(4, 4);
+    EXPECT_GT(p[3], 0.99);
+    // From x < 0 the red slab (s = 0, x in [0, 1]) is in front, from x > 4 the blue one.
+    EXPECT_GT(side < 0 ? p[0] : p[2], 0.99) << side;
+    EXPECT_LT(side < 0 ? p[2] : p[0], 0.01) << side;
+  }
+}
+
+TEST(ProjectedTetrahedra, SameBytesWithAnyThreadCountAndTileSize) {
+  const TetMesh mesh = test::carved_mesh(6, wave, [](double x, double y, double) { return x < 2 || y > 3; });
+  const BruteSlabTable table(tf(), 32, 8, mesh.max_edge_length());
+  CameraSpec cs = view({-6, -5, 9}, {2.5, 2.5, 2.5}, false);
+  cs.width = 37;
+  cs.height = 29;
+  const Camera cam(cs);
+  const Image one = render_projected(cam, mesh, table, {.threads = 1});
+  for (RenderOptions opt : {RenderOptions{2, 16}, RenderOptions{3, 5}, RenderOptions{2, 64}}) {
+    const Image other = render_projected(cam, mesh, table, opt);
+    ASSERT_EQ(0, std::memcmp(one.data().data(), other.data().data(), one.data().size() * sizeof(float)));
+  }
+}
+
+TEST(ProjectedTetrahedra, RefusesATableTooShortForTheMesh) {
+  const TetMesh mesh = test::unit_tet();
+  const BruteSlabTable table(tf(), 8, 4, 1.0);
+  CameraSpec cs = view({3, 3, 3}, {0, 0, 0}, false);
+  EXPECT_THROW(render_projected(Camera(cs), mesh, table), Error);
+}
+
+}  // namespace
+}  // namespace vri
