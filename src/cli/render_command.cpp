@@ -45,22 +45,30 @@ int run_render(const RenderArgs& args) {
   if (args.height) scene.camera.height = *args.height;
 
   const Camera camera(scene.camera);
-  // `pt` projects whole tetrahedra; every other method integrates ray by ray.
-  const bool projected = scene.method.name == "pt";
+  // `pt` and `pt-cylindrical` project whole tetrahedra; every other method integrates ray by ray.
+  const std::string& name = scene.method.name;
+  const bool projected = name == "pt" || name == "pt-cylindrical";
   std::unique_ptr<Integrator> integrator;
   std::unique_ptr<SlabTable> table;
-  if (projected) table = make_slab_table(scene.method, scene.mesh(), scene.transfer_function);
-  else
+  std::optional<CylindricalTable> cylinder;
+  if (projected) {
+    table = make_slab_table(scene.method, scene.mesh(), scene.transfer_function);
+    if (name == "pt-cylindrical")
+      cylinder.emplace(*table, scene.transfer_function, scene.method.table_size,
+                       scene.method.planes > 0 ? scene.method.planes : scene.method.table_size);
+  } else
     integrator = std::visit(
         [&](const auto& volume) { return make_integrator(scene.method, volume, scene.transfer_function); },
         scene.volume);
   const auto start = std::chrono::steady_clock::now();
-  const Image image = projected ? render_projected(camera, scene.mesh(), *table, {.threads = args.threads})
-                                : render(camera, *integrator, {.threads = args.threads});
+  const RenderOptions options{.threads = args.threads};
+  const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options)
+                      : projected ? render_projected(camera, scene.mesh(), *table, options)
+                                  : render(camera, *integrator, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (ext == ".npy") write_npy(out, image);
   else write_png(out, image, scene.background);
-  std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '" << (projected ? "pt" : integrator->name())
+  std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '" << (projected ? name : std::string(integrator->name()))
             << "' in " << seconds << " s -> " << args.output << "\n";
   return 0;
 }

@@ -52,7 +52,8 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMes
                                             const TransferFunction& tf) {
   if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance);
   if (spec.name == "tet-raycast") return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf));
-  if (spec.name == "pt") throw Error("method 'pt' projects whole tetrahedra; it has no per-ray integrator");
+  if (spec.name == "pt" || spec.name == "pt-cylindrical")
+    throw Error("method '" + spec.name + "' projects whole tetrahedra; it has no per-ray integrator");
   if (!is_mesh_method(spec.name) && is_known(spec.name))
     throw Error("method '" + spec.name + "' works on regular grids only; for a tetrahedral mesh use exact or tet-raycast");
   refuse(spec.name, "tetrahedral meshes");

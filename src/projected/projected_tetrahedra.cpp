@@ -10,6 +10,7 @@
 
 #include "vri/core/error.hpp"
 #include "vri/projected/classify.hpp"
+#include "vri/tables/cylindrical_table.hpp"
 
 namespace vri {
 
@@ -53,9 +54,11 @@ bool owns(Point2 a, Point2 b, double sign) {
 
 class TileRaster {
  public:
-  TileRaster(const Camera& cam, const TetMesh& mesh, const SlabTable& table, const std::vector<Screen>& screen,
-             Vec3 view, bool perspective)
-      : cam_(cam), mesh_(mesh), table_(table), screen_(screen), view_(view), perspective_(perspective) {}
+  // Exactly one of slab and cylinder is given.
+  TileRaster(const Camera& cam, const TetMesh& mesh, const SlabTable* slab, const CylindricalTable* cylinder,
+             const std::vector<Screen>& screen, Vec3 view, bool perspective)
+      : cam_(cam), mesh_(mesh), slab_(slab), cylinder_(cylinder), screen_(screen), view_(view),
+        perspective_(perspective) {}
 
   void draw(std::int32_t tet, int x0, int y0, int x1, int y1, std::vector<Fragment>& out) const {
     const auto& v = mesh_.tets()[tet];
@@ -105,14 +108,16 @@ class TileRaster {
       std::swap(da, db);
     }
     const Vertex thick{txy, pa, pb, sa, sb, da, db};
+    // pt-cylindrical: the tetrahedron's cylinder plane, from its thick vertex (equation 10).
+    const double alpha = cylinder_ ? cylinder_->alpha(length(pb - pa), sa, sb) : 0;
     if (pr.kind == 1) {
       const auto& o = pr.others;
-      for (int k = 0; k < 3; ++k) triangle(tet, thick, silhouette(o[k]), silhouette(o[(k + 1) % 3]), x0, y0, x1, y1, out);
+      for (int k = 0; k < 3; ++k) triangle(tet, alpha, thick, silhouette(o[k]), silhouette(o[(k + 1) % 3]), x0, y0, x1, y1, out);
     } else {
       // The quadrilateral's corners in order around it alternate between the two diagonals.
       const int ring[4] = {pr.edge_a[0], pr.edge_b[0], pr.edge_a[1], pr.edge_b[1]};
       for (int k = 0; k < 4; ++k)
-        triangle(tet, thick, silhouette(ring[k]), silhouette(ring[(k + 1) % 4]), x0, y0, x1, y1, out);
+        triangle(tet, alpha, thick, silhouette(ring[k]), silhouette(ring[(k + 1) % 4]), x0, y0, x1, y1, out);
     }
   }
 
@@ -122,7 +127,7 @@ class TileRaster {
   double weight_depth(std::int32_t point) const { return perspective_ ? screen_[point].depth : 1.0; }
   double weight_of(double d) const { return perspective_ ? d : 1.0; }
 
-  void triangle(std::int32_t tet, const Vertex& a, const Vertex& b, const Vertex& c, int x0, int y0, int x1, int y1,
+  void triangle(std::int32_t tet, double alpha, const Vertex& a, const Vertex& b, const Vertex& c, int x0, int y0, int x1, int y1,
                 std::vector<Fragment>& out) const {
     const double area = edge(a.xy, b.xy, c.xy);
     if (area == 0) return;
@@ -152,7 +157,7 @@ class TileRaster {
                                    a.front, b.front, c.front, a.s_front, b.s_front, c.s_front, sf);
         const Vec3 k = interpolate(la / weight_of(a.d_back), lb / weight_of(b.d_back), lc / weight_of(c.d_back),
                                    a.back, b.back, c.back, a.s_back, b.s_back, c.s_back, sbk);
-        const Rgba v = table_.lookup(length(k - f), sf, sbk);
+        const Rgba v = cylinder_ ? cylinder_->lookup(alpha, length(k - f), sf, sbk) : slab_->lookup(length(k - f), sf, sbk);
         if (v[3] == 0 && v[0] == 0 && v[1] == 0 && v[2] == 0) continue;
         out.push_back({y * W + x, tet, depth(f), {float(v[0]), float(v[1]), float(v[2]), float(v[3])}});
       }
@@ -160,19 +165,18 @@ class TileRaster {
 
   const Camera& cam_;
   const TetMesh& mesh_;
-  const SlabTable& table_;
+  const SlabTable* slab_;
+  const CylindricalTable* cylinder_;
   const std::vector<Screen>& screen_;
   Vec3 view_;
   bool perspective_;
 };
 
-}  // namespace
-
-Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTable& table,
-                       const RenderOptions& options) {
+Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, const SlabTable* slab,
+                        const CylindricalTable* cylinder, const RenderOptions& options) {
   if (options.threads < 0) throw Error("thread count must be >= 0");
   if (options.tile_size <= 0) throw Error("tile size must be positive");
-  if (table.max_length() < mesh.max_edge_length())
+  if ((slab ? slab->max_length() : cylinder->max_length()) < mesh.max_edge_length())
     throw Error("pt: the table must cover segments up to the longest edge of the mesh");
   const CameraSpec& cs = camera.spec();
   const Vec3 view = normalize(cs.target - cs.eye);
@@ -211,7 +215,7 @@ Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTabl
       for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx) bins[std::size_t(ty) * tiles_x + tx].push_back(std::int32_t(t));
     }
-    const TileRaster raster(camera, mesh, table, screen, view, perspective);
+    const TileRaster raster(camera, mesh, slab, cylinder, screen, view, perspective);
     tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const tbb::blocked_range<int>& r) {
       std::vector<Fragment> frags;
       for (int tile = r.begin(); tile != r.end(); ++tile) {
@@ -237,6 +241,18 @@ Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTabl
     });
   });
   return image;
+}
+
+}  // namespace
+
+Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTable& table,
+                       const RenderOptions& options) {
+  return render_tetrahedra(camera, mesh, &table, nullptr, options);
+}
+
+Image render_projected(const Camera& camera, const TetMesh& mesh, const CylindricalTable& table,
+                       const RenderOptions& options) {
+  return render_tetrahedra(camera, mesh, nullptr, &table, options);
 }
 
 }  // namespace vri

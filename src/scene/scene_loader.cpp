@@ -257,6 +257,7 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     method.tolerance = m.number(mj, "tolerance", method.tolerance);
     method.table_size = m.integer(mj, "table_size", method.table_size);
     method.length_samples = m.integer(mj, "length_samples", method.length_samples);
+    method.planes = m.integer(mj, "planes", method.planes);
   }
 
   Lighting lighting;

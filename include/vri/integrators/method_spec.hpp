@@ -11,6 +11,7 @@ struct MethodSpec {
   double tolerance = 1e-6;   // exact, adaptive
   int table_size = 256;      // preint*, pt*
   int length_samples = 64;   // pt, tet-raycast: lengths in the (l, s_f, s_b) table
+  int planes = 0;            // pt-cylindrical: cylinder planes (0: table_size)
 };
 
 }  // namespace vri

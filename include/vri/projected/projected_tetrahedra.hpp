@@ -25,12 +25,17 @@
 #include "vri/mesh/tet_mesh.hpp"
 #include "vri/render/image.hpp"
 #include "vri/render/renderer.hpp"
+#include "vri/tables/cylindrical_table.hpp"
 #include "vri/tables/slab_table.hpp"
 
 namespace vri {
 
 // The table must cover mesh.max_edge_length() (vri::Error otherwise).
 Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTable& table,
+                       const RenderOptions& options = {});
+// pt-cylindrical: the same, each tetrahedron read from the two cylinder planes
+// next to its thick vertex's plane (2D lookups, Roettger & Ertl 2002, Sec. 4).
+Image render_projected(const Camera& camera, const TetMesh& mesh, const CylindricalTable& table,
                        const RenderOptions& options = {});
 
 }  // namespace vri
