@@ -124,6 +124,26 @@ TEST(ProjectedTetrahedra, SameBytesWithAnyThreadCountAndTileSize) {
   }
 }
 
+// pt-cylindrical reads the same table through cylinder planes: close to pt,
+// and closer with finer planes.
+TEST(ProjectedTetrahedra, CylindricalPlanesApproachPt) {
+  const TetMesh mesh = test::carved_mesh(6, wave, [](double x, double, double z) { return !(x > 2 && x < 3 && z > 1); });
+  const BruteSlabTable table(tf(), 32, 16, mesh.max_edge_length());
+  CameraSpec cs = view({13, -8, 10}, {2.5, 2.5, 2.5}, true);
+  cs.width = cs.height = 32;
+  const Camera cam(cs);
+  const Image pt = render_projected(cam, mesh, table);
+  auto error = [&](int size, int planes) {
+    const Image cyl = render_projected(cam, mesh, CylindricalTable(table, tf(), size, planes));
+    double e = 0;
+    for (std::size_t i = 0; i < pt.data().size(); ++i) e = std::max(e, double(std::abs(pt.data()[i] - cyl.data()[i])));
+    return e;
+  };
+  const double coarse = error(32, 16), fine = error(128, 128);
+  EXPECT_LT(coarse, 0.05);
+  EXPECT_LT(fine, 0.5 * coarse);
+}
+
 TEST(ProjectedTetrahedra, RefusesATableTooShortForTheMesh) {
   const TetMesh mesh = test::unit_tet();
   const BruteSlabTable table(tf(), 8, 4, 1.0);
