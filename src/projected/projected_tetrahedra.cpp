@@ -217,25 +217,35 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, const SlabTab
     }
     const TileRaster raster(camera, mesh, slab, cylinder, screen, view, perspective);
     tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const tbb::blocked_range<int>& r) {
-      std::vector<Fragment> frags;
+      std::vector<Fragment> frags, by_pixel;
+      std::vector<std::size_t> start;
       for (int tile = r.begin(); tile != r.end(); ++tile) {
         const int x0 = (tile % tiles_x) * ts, y0 = (tile / tiles_x) * ts;
-        const int x1 = std::min(W, x0 + ts), y1 = std::min(H, y0 + ts);
+        const int x1 = std::min(W, x0 + ts), y1 = std::min(H, y0 + ts), tw = x1 - x0;
         frags.clear();
         for (const std::int32_t t : bins[tile]) raster.draw(t, x0, y0, x1, y1, frags);
-        std::sort(frags.begin(), frags.end(), [](const Fragment& a, const Fragment& b) {
-          if (a.pixel != b.pixel) return a.pixel < b.pixel;
-          if (a.depth != b.depth) return a.depth < b.depth;
-          return a.tet < b.tet;
-        });
-        for (std::size_t i = 0; i < frags.size();) {
-          const std::int32_t pixel = frags[i].pixel;
+        // Bucket by pixel (counting sort), then order each pixel's few fragments by depth.
+        auto local = [&](const Fragment& f) { return std::size_t((f.pixel / W - y0) * tw + f.pixel % W - x0); };
+        start.assign(std::size_t(tw) * (y1 - y0) + 1, 0);
+        for (const Fragment& f : frags) ++start[local(f) + 1];
+        for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+        by_pixel.resize(frags.size());
+        {
+          std::vector<std::size_t> next(start.begin(), start.end() - 1);
+          for (const Fragment& f : frags) by_pixel[next[local(f)]++] = f;
+        }
+        for (std::size_t p = 0; p + 1 < start.size(); ++p) {
+          if (start[p] == start[p + 1]) continue;
+          const auto first = by_pixel.begin() + start[p], last = by_pixel.begin() + start[p + 1];
+          std::sort(first, last, [](const Fragment& a, const Fragment& b) {
+            return a.depth != b.depth ? a.depth < b.depth : a.tet < b.tet;
+          });
           double T = 1, C[3] = {0, 0, 0};
-          for (; i < frags.size() && frags[i].pixel == pixel; ++i) {
-            for (int c = 0; c < 3; ++c) C[c] += T * frags[i].rgba[c];
-            T *= 1 - frags[i].rgba[3];
+          for (auto f = first; f != last; ++f) {
+            for (int c = 0; c < 3; ++c) C[c] += T * f->rgba[c];
+            T *= 1 - f->rgba[3];
           }
-          image.set(pixel % W, pixel / W, {C[0], C[1], C[2], 1 - T});
+          image.set(x0 + int(p) % tw, y0 + int(p) / tw, {C[0], C[1], C[2], 1 - T});
         }
       }
     });
