@@ -36,6 +36,10 @@ struct Fragment {
   float rgba[4];
 };
 
+// floor(v) as an int within [lo, hi]; projections near the eye plane can be
+// far outside the image, beyond what an int holds.
+int floor_within(double v, int lo, int hi) { return static_cast<int>(std::clamp(std::floor(v), double(lo), double(hi))); }
+
 double orient(Point2 a, Point2 b, Point2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
 
 // The edge function of (a, b) evaluated in a canonical vertex order, so that
@@ -133,10 +137,11 @@ class TileRaster {
     if (area == 0) return;
     const double sign = area > 0 ? 1 : -1;
     const bool own_bc = owns(b.xy, c.xy, sign), own_ca = owns(c.xy, a.xy, sign), own_ab = owns(a.xy, b.xy, sign);
-    const int bx0 = std::max(x0, int(std::floor(std::min({a.xy.x, b.xy.x, c.xy.x}) - 0.5)));
-    const int bx1 = std::min(x1, int(std::ceil(std::max({a.xy.x, b.xy.x, c.xy.x}) - 0.5)) + 1);
-    const int by0 = std::max(y0, int(std::floor(std::min({a.xy.y, b.xy.y, c.xy.y}) - 0.5)));
-    const int by1 = std::min(y1, int(std::ceil(std::max({a.xy.y, b.xy.y, c.xy.y}) - 0.5)) + 1);
+    // Pixels whose centres x + 0.5 can lie in the triangle's bounding box.
+    const int bx0 = floor_within(std::min({a.xy.x, b.xy.x, c.xy.x}) - 0.5, x0, x1);
+    const int bx1 = floor_within(std::max({a.xy.x, b.xy.x, c.xy.x}) - 0.5, x0 - 1, x1 - 1) + 1;
+    const int by0 = floor_within(std::min({a.xy.y, b.xy.y, c.xy.y}) - 0.5, y0, y1);
+    const int by1 = floor_within(std::max({a.xy.y, b.xy.y, c.xy.y}) - 0.5, y0 - 1, y1 - 1) + 1;
     const int W = cam_.width();
     for (int y = by0; y < by1; ++y)
       for (int x = bx0; x < bx1; ++x) {
@@ -210,8 +215,8 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, const SlabTab
         hi[1] = std::max(hi[1], s.xy.y);
       }
       if (!ok || hi[0] < 0 || hi[1] < 0 || lo[0] > W || lo[1] > H) continue;
-      const int tx0 = std::max(0, int(std::floor(lo[0] - 0.5)) / ts), tx1 = std::min(tiles_x - 1, int(hi[0] + 0.5) / ts);
-      const int ty0 = std::max(0, int(std::floor(lo[1] - 0.5)) / ts), ty1 = std::min(tiles_y - 1, int(hi[1] + 0.5) / ts);
+      const int tx0 = floor_within(lo[0] - 0.5, 0, W - 1) / ts, tx1 = floor_within(hi[0] + 0.5, 0, W - 1) / ts;
+      const int ty0 = floor_within(lo[1] - 0.5, 0, H - 1) / ts, ty1 = floor_within(hi[1] + 0.5, 0, H - 1) / ts;
       for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx) bins[std::size_t(ty) * tiles_x + tx].push_back(std::int32_t(t));
     }
