@@ -16,9 +16,9 @@ const std::vector<std::string>& known_method_names() {
 }
 
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
-                                            const TransferFunction& tf) {
-  if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step);
-  if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance);
+                                            const TransferFunction& tf, const Lighting& lighting) {
+  if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step, lighting);
+  if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
   const auto& known = known_method_names();
   if (std::find(known.begin(), known.end(), spec.name) != known.end())
     throw Error("method '" + spec.name + "' is not implemented yet for regular grids");
