@@ -6,19 +6,19 @@
 
 #include "cubic.hpp"
 #include "gauss_kronrod.hpp"
+#include "tf_pieces.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri {
 
 ExactIntegrator::ExactIntegrator(const GridVolume& volume, const TransferFunction& tf,
                                  double tolerance)
-    : volume_(volume), tf_(tf), tolerance_(tolerance) {
+    : volume_(volume), tolerance_(tolerance), splitter_(std::make_unique<TfPieceSplitter>(tf)) {
   if (!(tolerance >= 1e-12 && tolerance <= 0.1))
     throw Error("exact: tolerance must be in [1e-12, 0.1], got " + std::to_string(tolerance));
-  opaque_prefix_.assign(tf.segments().size() + 1, 0);
-  for (std::size_t i = 0; i < tf.segments().size(); ++i)
-    opaque_prefix_[i + 1] = opaque_prefix_[i] + (tf.segments()[i].transparent() ? 0 : 1);
 }
+
+ExactIntegrator::~ExactIntegrator() = default;
 
 Rgba ExactIntegrator::integrate(const Ray& ray) const {
   const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
@@ -54,32 +54,8 @@ struct Piece {
 
 void ExactIntegrator::integrate_cell(const CellSegment& cs, double error_per_length,
                                      Accumulator& acc) const {
-  const double len = cs.tb - cs.ta;
   const Cubic s = trilinear_along(volume_, cs);
-
-  // Knots: the ends and the critical points, between which s is monotone.
-  double knots[4], vals[4];
-  double crit[2];
-  const int nc = s.critical_points(len, crit);
-  int nk = 0;
-  knots[nk++] = 0;
-  for (int i = 0; i < nc; ++i) knots[nk++] = crit[i];
-  knots[nk++] = len;
-  double smin = INFINITY, smax = -INFINITY;
-  for (int i = 0; i < nk; ++i) {
-    vals[i] = s(knots[i]);
-    smin = std::min(smin, vals[i]);
-    smax = std::max(smax, vals[i]);
-  }
-  // Empty space: every transfer-function segment the cell's values touch is transparent.
-  const int i0 = tf_.segment_index(smin), i1 = tf_.segment_index(smax);
-  if (opaque_prefix_[i1 + 1] == opaque_prefix_[i0]) return;
-
-  const auto& bp = tf_.breakpoints();
-  auto integrate_piece = [&](double x, double y) {
-    if (!(y > x)) return;
-    const TfSegment& seg = tf_.segments()[tf_.segment_index(s(0.5 * (x + y)))];
-    if (seg.transparent()) return;
+  splitter_->split(s, cs.tb - cs.ta, [&](double x, double y, const TfSegment& seg) {
     const Piece pc(s, seg);
     const double px = pc.P(x);
     auto f = [&](double t, double (&out)[3]) {
@@ -115,26 +91,7 @@ void ExactIntegrator::integrate_cell(const CellSegment& cs, double error_per_len
     }
     for (int c = 0; c < 3; ++c) acc.C[c] += T_in * sum[c];
     acc.T = T_in * std::exp(px - pc.P(y));
-  };
-
-  // Split each monotone run where s crosses a control point, front to back.
-  for (int m = 0; m + 1 < nk; ++m) {
-    const double ka = knots[m], kb = knots[m + 1], fa = vals[m], fb = vals[m + 1];
-    double prev = ka;
-    auto cut_at = [&](double value) {
-      const double r = std::clamp(s.solve_monotone(value, ka, kb), prev, kb);
-      integrate_piece(prev, r);
-      prev = r;
-    };
-    if (fa < fb) {
-      for (auto it = std::upper_bound(bp.begin(), bp.end(), fa); it != bp.end() && *it < fb; ++it)
-        cut_at(*it);
-    } else if (fa > fb) {
-      for (auto it = std::lower_bound(bp.begin(), bp.end(), fa); it != bp.begin() && *(it - 1) > fb;)
-        cut_at(*--it);
-    }
-    integrate_piece(prev, kb);
-  }
+  });
 }
 
 }  // namespace vri

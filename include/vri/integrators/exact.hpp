@@ -11,6 +11,8 @@
 // length), so the whole ray's colour error stays within `tolerance`.
 // The ray stops once the transmittance falls below tolerance/10, which bounds
 // what is dropped (alpha and colour) by tolerance/10.
+#include <memory>
+
 #include "vri/integrators/integrator.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/cell_traversal.hpp"
@@ -18,10 +20,13 @@
 
 namespace vri {
 
+class TfPieceSplitter;
+
 class ExactIntegrator final : public Integrator {
  public:
   // tolerance: absolute error bound per channel; throws unless 1e-12 <= tolerance <= 0.1.
   ExactIntegrator(const GridVolume& volume, const TransferFunction& tf, double tolerance);
+  ~ExactIntegrator() override;
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "exact"; }
 
@@ -35,9 +40,8 @@ class ExactIntegrator final : public Integrator {
 
  private:
   const GridVolume& volume_;
-  const TransferFunction& tf_;
   double tolerance_;
-  std::vector<int> opaque_prefix_;  // opaque_prefix_[i]: non-transparent segments before i
+  std::unique_ptr<const TfPieceSplitter> splitter_;
 };
 
 }  // namespace vri
