@@ -45,21 +45,17 @@ const ErrorEstimatingIntegrator& error_estimating(const Integrator& integrator, 
 }
 
 // The accepted steps along one pixel's ray as CSV (t and h in voxel units).
-void write_trace(const std::filesystem::path& path, const Camera& camera, const ErrorEstimatingIntegrator& integrator,
-                 int px, int py, double voxel_unit) {
-  if (px < 0 || py < 0 || px >= camera.width() || py >= camera.height())
-    throw Error("--trace-pixel " + std::to_string(px) + " " + std::to_string(py) + " lies outside the image");
+std::string trace_csv(const Ray& ray, const ErrorEstimatingIntegrator& integrator, double voxel_unit) {
   RayStats stats;
   stats.record_steps = true;
-  integrator.integrate(camera.ray(px, py), stats);
+  integrator.integrate(ray, stats);
   std::ostringstream csv;
   csv.precision(10);
   csv << "integral,t,h,alpha\n";
   for (const AdaptiveStep& s : stats.steps)
     csv << (s.outer ? "outer" : "inner") << ',' << s.t / voxel_unit << ',' << s.h / voxel_unit << ',' << s.alpha
         << '\n';
-  const std::string text = csv.str();
-  write_file_atomically(path, std::as_bytes(std::span(text.data(), text.size())));
+  return csv.str();
 }
 
 int run_render(const RenderArgs& args) {
@@ -86,17 +82,27 @@ int run_render(const RenderArgs& args) {
 
   const Camera camera(scene.camera);
   const auto integrator = make_integrator(scene.method, scene.volume, scene.transfer_function);
+  // Every check comes before the first file is written.
+  const ErrorEstimatingIntegrator* estimating = nullptr;
+  if (args.error_estimate || args.trace)
+    estimating = &error_estimating(*integrator, args.error_estimate ? "--error-estimate" : "--trace");
+  if (args.trace) {
+    const int px = args.trace_pixel[0], py = args.trace_pixel[1];
+    if (px < 0 || py < 0 || px >= camera.width() || py >= camera.height())
+      throw Error("--trace-pixel " + std::to_string(px) + " " + std::to_string(py) + " lies outside the image");
+  }
   const auto start = std::chrono::steady_clock::now();
   const Image image = render(camera, *integrator, {.threads = args.threads});
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  Image estimate;
+  if (args.error_estimate) estimate = render_error_estimate(camera, *estimating, {.threads = args.threads});
+  std::string trace;
+  if (args.trace)
+    trace = trace_csv(camera.ray(args.trace_pixel[0], args.trace_pixel[1]), *estimating, scene.volume.voxel_unit());
   if (ext == ".npy") write_npy(out, image);
   else write_png(out, image, scene.background);
-  if (args.error_estimate)
-    write_npy(*args.error_estimate,
-              render_error_estimate(camera, error_estimating(*integrator, "--error-estimate"), {.threads = args.threads}));
-  if (args.trace)
-    write_trace(*args.trace, camera, error_estimating(*integrator, "--trace"), args.trace_pixel[0],
-                args.trace_pixel[1], scene.volume.voxel_unit());
+  if (args.error_estimate) write_npy(*args.error_estimate, estimate);
+  if (args.trace) write_file_atomically(*args.trace, std::as_bytes(std::span(trace.data(), trace.size())));
   std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '" << integrator->name()
             << "' in " << seconds << " s -> " << args.output << "\n";
   return 0;
