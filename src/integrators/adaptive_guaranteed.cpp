@@ -33,16 +33,23 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
 
   // One smooth piece [x, y] (t from the cell entry) on transfer-function segment `seg`.
   auto integrate_piece = [&](const Cubic& s, const TfSegment& seg, double ta, double x, double y) {
+    // The samples of the current try and where they were taken: a half step
+    // reuses 0, 1/4 and 1/2 of the failed one, the next step starts at the
+    // last one's end (positions compare equal as halving is exact).
     TfSample f[5];
+    double at[5] = {};
     bool known[5] = {false, false, false, false, false};
     simpson5::StepControl ctl{std::min(y - x, hmax_)};
     for (double u = x; u < y;) {
       const double h = std::min(ctl.h, y - u);
-      for (int k = 0; k < 5; ++k)
-        if (!known[k]) {
-          ++stats.evaluations;
-          f[k] = seg.at(s(u + h * (0.25 * k)));
-        }
+      for (int k = 0; k < 5; ++k) {
+        const double p = u + h * (0.25 * k);
+        if (known[k] && at[k] == p) continue;
+        ++stats.evaluations;
+        f[k] = seg.at(s(p));
+        at[k] = p;
+        known[k] = true;
+      }
       double tau[5], depth[5], g[4][5];
       for (int k = 0; k < 5; ++k) tau[k] = f[k].tau;
       simpson5::cumulative(tau, h, depth);
@@ -63,10 +70,8 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
           T * simpson5::error(simpson5::halves(tau, h), simpson5::whole(tau, h));
       const bool ok = (err <= colour_density * h && depth_err <= depth_density * h) || h <= hfloor_;
       if (!ok) {
-        // The half step reuses the samples at 0, 1/4 and 1/2 of this one.
-        f[4] = f[2];
-        f[2] = f[1];
-        std::fill(known, known + 5, true);
+        f[4] = f[2], at[4] = at[2];
+        f[2] = f[1], at[2] = at[1];
         known[1] = known[3] = false;
         ctl.failed(h, hfloor_);
         continue;
@@ -78,9 +83,8 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
       T *= std::exp(-depth[4]);
       if (stats.record_steps) stats.steps.push_back({true, ta + u, h, C[3]});
       ctl.succeeded(hmax_);
-      f[0] = f[4];  // the next step starts where this one ends
-      std::fill(known, known + 5, false);
-      known[0] = true;
+      f[0] = f[4], at[0] = at[4];
+      std::fill(known + 1, known + 5, false);
       u = h >= y - u ? y : u + h;
     }
   };
