@@ -1,6 +1,6 @@
 // Speed of the adaptive methods (Campagnolo et al. 2015 coupled/decoupled and
 // vri's guaranteed mode) against riemann at h = 0.1 on the bonsai scene at
-// 200 x 150 pixels. Run: ./build/bench_adaptive --benchmark_min_time=2
+// 200 x 150 pixels. Run: ./build/bench/bench_adaptive --benchmark_min_time=1 --benchmark_repetitions=3
 // (figures: docs/ADAPTIVE.md).
 #include <benchmark/benchmark.h>
 
