@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "vri/core/error.hpp"
+#include "vri/integrators/adaptive_guaranteed.hpp"
+#include "vri/integrators/adaptive_simpson.hpp"
 #include "vri/integrators/exact.hpp"
 #include "vri/integrators/riemann.hpp"
 
@@ -18,6 +20,14 @@ const std::vector<std::string>& known_method_names() {
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
                                             const TransferFunction& tf, const Lighting& lighting) {
   if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step, lighting);
+  if (spec.name == "adaptive") {
+    if (lighting.enabled) throw Error("method 'adaptive' does not support lighting yet");
+    const AdaptiveParams p{spec.tolerance, spec.h0, spec.hmin, spec.hmax,
+                           parse_adaptive_strategy(spec.strategy)};
+    if (p.strategy == AdaptiveStrategy::Guaranteed)
+      return std::make_unique<GuaranteedAdaptiveIntegrator>(volume, tf, p);
+    return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p);
+  }
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
   const auto& known = known_method_names();
   if (std::find(known.begin(), known.end(), spec.name) != known.end())

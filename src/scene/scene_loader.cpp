@@ -230,6 +230,10 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     method.step = m.number(mj, "step", method.step);
     method.tolerance = m.number(mj, "tolerance", method.tolerance);
     method.table_size = m.integer(mj, "table_size", method.table_size);
+    method.h0 = m.number(mj, "h0", method.h0);
+    method.hmin = m.number(mj, "hmin", method.hmin);
+    method.hmax = m.number(mj, "hmax", method.hmax);
+    method.strategy = m.string(mj, "strategy", method.strategy);
   }
 
   Lighting lighting;

@@ -14,6 +14,7 @@
 // With lighting (SPEC §5), c is replaced by c_lit evaluated continuously; the
 // pieces are also split where N.d changes sign (the kink of |N.d|): N.d is the
 // interpolated gradient dotted with d, a cubic inside a cell.
+#include <memory>
 #include <optional>
 
 #include "vri/integrators/integrator.hpp"
@@ -24,11 +25,14 @@
 
 namespace vri {
 
+class TfPieceSplitter;
+
 class ExactIntegrator final : public Integrator {
  public:
   // tolerance: absolute error bound per channel; throws unless 1e-12 <= tolerance <= 0.1.
   ExactIntegrator(const GridVolume& volume, const TransferFunction& tf, double tolerance,
                   const Lighting& lighting = {});
+  ~ExactIntegrator() override;
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "exact"; }
 
@@ -42,10 +46,9 @@ class ExactIntegrator final : public Integrator {
 
  private:
   const GridVolume& volume_;
-  const TransferFunction& tf_;
   double tolerance_;
   std::optional<HeadlightShader> shader_;
-  std::vector<int> opaque_prefix_;  // opaque_prefix_[i]: non-transparent segments before i
+  std::unique_ptr<const TfPieceSplitter> splitter_;
 };
 
 }  // namespace vri

@@ -10,6 +10,10 @@ struct MethodSpec {
   double step = 1.0;         // riemann, preint*: voxel units
   double tolerance = 1e-6;   // exact, adaptive
   int table_size = 256;      // preint*, pt*
+  // adaptive (Campagnolo et al. 2015 defaults), voxel units; strategy:
+  // coupled, decoupled or guaranteed
+  double h0 = 0.5, hmin = 0.1, hmax = 2.0;
+  std::string strategy = "coupled";
 };
 
 }  // namespace vri
