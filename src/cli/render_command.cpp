@@ -1,19 +1,27 @@
 // vri render SCENE.json -o OUT.(npy|png) [--method NAME] [--step H]
 //   [--tolerance E] [--table-size N] [--width W --height H] [--threads K]
+//   [--h0 H --hmin H --hmax H --strategy S] [--error-estimate ERR.npy]
+//   [--trace-pixel PX PY --trace STEPS.csv]
 #include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <span>
+#include <sstream>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "commands.hpp"
 #include "vri/core/error.hpp"
+#include "vri/integrators/error_estimating_integrator.hpp"
 #include "vri/integrators/make_integrator.hpp"
+#include "vri/io/file_io.hpp"
 #include "vri/io/npy.hpp"
 #include "vri/io/png.hpp"
 #include "vri/projected/projected_tetrahedra.hpp"
+#include "vri/render/error_estimate.hpp"
 #include "vri/render/renderer.hpp"
 #include "vri/scene/scene.hpp"
 
@@ -27,7 +35,30 @@ struct RenderArgs {
   std::optional<double> step, tolerance;
   std::optional<int> table_size, width, height;
   int threads = 0;
+  std::optional<double> h0, hmin, hmax;
+  std::optional<std::string> strategy, error_estimate, trace;
+  std::vector<int> trace_pixel;
 };
+
+const ErrorEstimatingIntegrator& error_estimating(const Integrator& integrator, const char* flag) {
+  const auto* e = dynamic_cast<const ErrorEstimatingIntegrator*>(&integrator);
+  if (!e) throw Error(std::string(flag) + " needs method 'adaptive', not '" + std::string(integrator.name()) + "'");
+  return *e;
+}
+
+// The accepted steps along one pixel's ray as CSV (t and h in voxel units).
+std::string trace_csv(const Ray& ray, const ErrorEstimatingIntegrator& integrator, double voxel_unit) {
+  RayStats stats;
+  stats.record_steps = true;
+  integrator.integrate(ray, stats);
+  std::ostringstream csv;
+  csv.precision(10);
+  csv << "integral,t,h,alpha\n";
+  for (const AdaptiveStep& s : stats.steps)
+    csv << (s.outer ? "outer" : "inner") << ',' << s.t / voxel_unit << ',' << s.h / voxel_unit << ',' << s.alpha
+        << '\n';
+  return csv.str();
+}
 
 int run_render(const RenderArgs& args) {
   const std::filesystem::path out(args.output);
@@ -43,6 +74,13 @@ int run_render(const RenderArgs& args) {
   if (args.table_size) scene.method.table_size = *args.table_size;
   if (args.width) scene.camera.width = *args.width;
   if (args.height) scene.camera.height = *args.height;
+  if (args.h0) scene.method.h0 = *args.h0;
+  if (args.hmin) scene.method.hmin = *args.hmin;
+  if (args.hmax) scene.method.hmax = *args.hmax;
+  if (args.strategy) scene.method.strategy = *args.strategy;
+  if (args.error_estimate && std::filesystem::path(*args.error_estimate).extension() != ".npy")
+    throw Error("--error-estimate '" + *args.error_estimate + "' must end in .npy");
+  if (args.trace.has_value() != !args.trace_pixel.empty()) throw Error("--trace and --trace-pixel go together");
 
   const Camera camera(scene.camera);
   // `pt` and `pt-cylindrical` project whole tetrahedra; every other method integrates ray by ray.
@@ -52,23 +90,47 @@ int run_render(const RenderArgs& args) {
   std::unique_ptr<SlabTable> table;
   std::optional<CylindricalTable> cylinder;
   if (projected) {
+    if (scene.lighting.enabled) throw Error("lighting is not implemented for tetrahedral meshes");
     table = make_slab_table(scene.method, scene.mesh(), scene.transfer_function);
     if (name == "pt-cylindrical")
       cylinder.emplace(*table, scene.transfer_function, scene.method.table_size,
                        scene.method.planes > 0 ? scene.method.planes : scene.method.table_size);
-  } else
+  } else {
     integrator = std::visit(
-        [&](const auto& volume) { return make_integrator(scene.method, volume, scene.transfer_function); },
+        [&](const auto& volume) {
+          return make_integrator(scene.method, volume, scene.transfer_function, scene.lighting);
+        },
         scene.volume);
+  }
+  // Every check comes before the first file is written.
+  const ErrorEstimatingIntegrator* estimating = nullptr;
+  if (args.error_estimate || args.trace) {
+    const char* flag = args.error_estimate ? "--error-estimate" : "--trace";
+    if (!integrator) throw Error(std::string(flag) + " needs method 'adaptive', not '" + name + "'");
+    estimating = &error_estimating(*integrator, flag);
+  }
+  if (args.trace) {
+    const int px = args.trace_pixel[0], py = args.trace_pixel[1];
+    if (px < 0 || py < 0 || px >= camera.width() || py >= camera.height())
+      throw Error("--trace-pixel " + std::to_string(px) + " " + std::to_string(py) + " lies outside the image");
+  }
   const auto start = std::chrono::steady_clock::now();
   const RenderOptions options{.threads = args.threads};
   const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options)
                       : projected ? render_projected(camera, scene.mesh(), *table, options)
                                   : render(camera, *integrator, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  Image estimate;
+  if (args.error_estimate) estimate = render_error_estimate(camera, *estimating, {.threads = args.threads});
+  std::string trace;
+  if (args.trace)
+    trace = trace_csv(camera.ray(args.trace_pixel[0], args.trace_pixel[1]), *estimating, scene.grid().voxel_unit());
   if (ext == ".npy") write_npy(out, image);
   else write_png(out, image, scene.background);
-  std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '" << (projected ? name : std::string(integrator->name()))
+  if (args.error_estimate) write_npy(*args.error_estimate, estimate);
+  if (args.trace) write_file_atomically(*args.trace, std::as_bytes(std::span(trace.data(), trace.size())));
+  std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '"
+            << (projected ? name : std::string(integrator->name()))
             << "' in " << seconds << " s -> " << args.output << "\n";
   return 0;
 }
@@ -87,6 +149,14 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--width", args->width, "Image width in pixels");
   cmd->add_option("--height", args->height, "Image height in pixels");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)");
+  cmd->add_option("--h0", args->h0, "adaptive: initial step (voxel units)");
+  cmd->add_option("--hmin", args->hmin, "adaptive: smallest step (voxel units)");
+  cmd->add_option("--hmax", args->hmax, "adaptive: largest step (voxel units)");
+  cmd->add_option("--strategy", args->strategy, "adaptive: coupled, decoupled or guaranteed");
+  cmd->add_option("--error-estimate", args->error_estimate, "adaptive: write the per-pixel error estimate (.npy)");
+  cmd->add_option("--trace-pixel", args->trace_pixel, "adaptive: pixel PX PY whose steps --trace writes")
+      ->expected(2);
+  cmd->add_option("--trace", args->trace, "adaptive: write the steps along one ray (.csv)");
   return [args] { return run_render(*args); };
 }
 

@@ -9,29 +9,46 @@
 
 namespace vri {
 
-ExactIntegrator::ExactIntegrator(const GridVolume& volume, const TransferFunction& tf,
-                                 double tolerance)
-    : volume_(volume), pieces_(tf), tolerance_(tolerance) {
+ExactIntegrator::ExactIntegrator(const GridVolume& volume, const TransferFunction& tf, double tolerance,
+                                 const Lighting& lighting)
+    : volume_(volume), tolerance_(tolerance), pieces_(tf) {
   if (!(tolerance >= 1e-12 && tolerance <= 0.1))
     throw Error("exact: tolerance must be in [1e-12, 0.1], got " + std::to_string(tolerance));
+  if (lighting.enabled) shader_.emplace(lighting, volume);
 }
+
+ExactIntegrator::~ExactIntegrator() = default;
 
 Rgba ExactIntegrator::integrate(const Ray& ray) const {
   const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
   if (!iv) return {0, 0, 0, 0};
   Accumulator acc;
   const double error_per_length = tolerance_ / iv->length();
-  const double cutoff = 0.1 * tolerance_;
+  // What is left after stopping is at most T * (brightest colour) per channel.
+  const double cutoff = 0.1 * tolerance_ / std::max(1.0, shader_ ? shader_->max_brightness() : 1.0);
   for_each_cell_segment(volume_, ray, *iv, [&](const CellSegment& seg) {
-    integrate_cell(seg, error_per_length, acc);
+    integrate_cell(seg, ray.dir, error_per_length, acc);
     return acc.T > cutoff;
   });
   return {acc.C[0], acc.C[1], acc.C[2], 1 - acc.T};
 }
 
-void ExactIntegrator::integrate_cell(const CellSegment& cs, double error_per_length,
+void ExactIntegrator::integrate_cell(const CellSegment& cs, Vec3 dir, double error_per_length,
                                      Accumulator& acc) const {
-  pieces_.integrate(trilinear_along(volume_, cs), cs.tb - cs.ta, error_per_length, acc);
+  const double len = cs.tb - cs.ta;
+  const Cubic s = trilinear_along(volume_, cs);
+  // Lit: the gradient components along the segment and the sign changes of
+  // N.d, where |N.d| has a kink.
+  Cubic grad[3];
+  double kinks[3];
+  int nkinks = 0;
+  if (shader_) {
+    for (int a = 0; a < 3; ++a) grad[a] = trilinear_along(shader_->gradients().cell_corners(a, cs.cell), cs);
+    nkinks = sign_changes(combine(1.0, combine(dir.x, grad[0], dir.y, grad[1]), dir.z, grad[2]), len, kinks);
+  }
+
+  const PieceIntegrator::Lit lit{shader_ ? &*shader_ : nullptr, grad, dir, kinks, nkinks};
+  pieces_.integrate(s, len, error_per_length, acc, shader_ ? &lit : nullptr);
 }
 
 }  // namespace vri

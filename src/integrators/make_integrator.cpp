@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "vri/core/error.hpp"
+#include "vri/integrators/adaptive_guaranteed.hpp"
+#include "vri/integrators/adaptive_simpson.hpp"
 #include "vri/integrators/exact.hpp"
 #include "vri/integrators/mesh_exact.hpp"
 #include "vri/integrators/tet_raycast.hpp"
@@ -39,9 +41,17 @@ const std::vector<std::string>& known_method_names() {
 }
 
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
-                                            const TransferFunction& tf) {
-  if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step);
-  if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance);
+                                            const TransferFunction& tf, const Lighting& lighting) {
+  if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step, lighting);
+  if (spec.name == "adaptive") {
+    if (lighting.enabled) throw Error("method 'adaptive' does not support lighting yet");
+    const AdaptiveParams p{spec.tolerance, spec.h0, spec.hmin, spec.hmax,
+                           parse_adaptive_strategy(spec.strategy)};
+    if (p.strategy == AdaptiveStrategy::Guaranteed)
+      return std::make_unique<GuaranteedAdaptiveIntegrator>(volume, tf, p);
+    return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p);
+  }
+  if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
   if (is_mesh_method(spec.name))
     throw Error("method '" + spec.name + "' needs a tetrahedral mesh (volume {\"file\": \"x.vtk\"} or " +
                 "{\"builtin\": \"tetrahedralized\", ...})");
@@ -49,7 +59,8 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
 }
 
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
-                                            const TransferFunction& tf) {
+                                            const TransferFunction& tf, const Lighting& lighting) {
+  if (lighting.enabled) throw Error("lighting is not implemented for tetrahedral meshes");
   if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance);
   if (spec.name == "tet-raycast") return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf));
   if (spec.name == "pt" || spec.name == "pt-cylindrical")

@@ -9,10 +9,17 @@
 // has a smooth (entire) integrand and is computed by adaptive Gauss-Kronrod
 // (7/15) with an absolute error budget of tolerance * (piece length / ray
 // length), so the whole ray's colour error stays within `tolerance`.
-// The ray stops once the transmittance falls below tolerance/10, which bounds
-// what is dropped (alpha and colour) by tolerance/10.
+// The ray stops once the transmittance falls below tolerance/10 (divided by
+// the brightest lit colour when lighting is on), which bounds what is dropped.
+// With lighting (SPEC §5), c is replaced by c_lit evaluated continuously; the
+// pieces are also split where N.d changes sign (the kink of |N.d|): N.d is the
+// interpolated gradient dotted with d, a cubic inside a cell.
+#include <memory>
+#include <optional>
+
 #include "vri/integrators/integrator.hpp"
 #include "vri/integrators/piece_integrator.hpp"
+#include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/cell_traversal.hpp"
 #include "vri/volume/grid_volume.hpp"
@@ -22,19 +29,22 @@ namespace vri {
 class ExactIntegrator final : public Integrator {
  public:
   // tolerance: absolute error bound per channel; throws unless 1e-12 <= tolerance <= 0.1.
-  ExactIntegrator(const GridVolume& volume, const TransferFunction& tf, double tolerance);
+  ExactIntegrator(const GridVolume& volume, const TransferFunction& tf, double tolerance,
+                  const Lighting& lighting = {});
+  ~ExactIntegrator() override;
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "exact"; }
 
   using Accumulator = PieceIntegrator::Accumulator;
-  // Integrates one cell piece into `acc`; error_per_length is the colour error
-  // allowed per unit of ray length. Public for tests of single cells.
-  void integrate_cell(const CellSegment& seg, double error_per_length, Accumulator& acc) const;
+  // Integrates one cell piece of a ray with direction `dir` into `acc`;
+  // error_per_length is the colour error allowed per unit of ray length.
+  void integrate_cell(const CellSegment& seg, Vec3 dir, double error_per_length, Accumulator& acc) const;
 
  private:
   const GridVolume& volume_;
-  PieceIntegrator pieces_;
   double tolerance_;
+  std::optional<HeadlightShader> shader_;
+  PieceIntegrator pieces_;
 };
 
 }  // namespace vri

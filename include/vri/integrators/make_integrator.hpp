@@ -8,6 +8,7 @@
 #include "vri/integrators/method_spec.hpp"
 #include "vri/mesh/tet_mesh.hpp"
 #include "vri/tables/slab_table.hpp"
+#include "vri/shading/lighting.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -19,12 +20,12 @@ const std::vector<std::string>& known_method_names();
 // Throws vri::Error for an unknown method, one not yet implemented, or bad
 // parameters. The integrator refers to `volume` and `tf`: keep them alive.
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
-                                            const TransferFunction& tf);
+                                            const TransferFunction& tf, const Lighting& lighting = {});
 
 // The same over a tetrahedral mesh (exact, tet-raycast); a grid-only method is refused,
 // and so is `pt`, which renders whole images (render_projected), not rays.
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
-                                            const TransferFunction& tf);
+                                            const TransferFunction& tf, const Lighting& lighting = {});
 
 // The (l, s_f, s_b) table the mesh methods use: table_size scalars a side,
 // length_samples lengths up to the mesh's longest edge.

@@ -12,6 +12,10 @@ struct MethodSpec {
   int table_size = 256;      // preint*, pt*
   int length_samples = 64;   // pt, tet-raycast: lengths in the (l, s_f, s_b) table
   int planes = 0;            // pt-cylindrical: cylinder planes (0: table_size)
+  // adaptive (Campagnolo et al. 2015 defaults), voxel units; strategy:
+  // coupled, decoupled or guaranteed
+  double h0 = 0.5, hmin = 0.1, hmax = 2.0;
+  std::string strategy = "coupled";
 };
 
 }  // namespace vri

@@ -3,17 +3,20 @@
 // which the scalar is a polynomial s(t) of degree <= 3 (a grid cell: cubic;
 // a tetrahedron: linear). Shared by the grid and mesh `exact` integrators and
 // by the brute-force (l, s_f, s_b) table. The piece is split where s crosses a
-// transfer-function control point; on each sub-piece tau(s(t)) is a cubic,
-// its integral (the optical depth) a quartic taken in closed form, and the
-// colour integral is adaptive Gauss-Kronrod (7/15) to an absolute budget of
-// error_per_length per unit of ray length.
-#include <vector>
+// transfer-function control point (TfPieceSplitter); on each sub-piece
+// tau(s(t)) is a cubic, its integral (the optical depth) a quartic taken in
+// closed form, and the colour integral is adaptive Gauss-Kronrod (7/15) to an
+// absolute budget of error_per_length per unit of ray length.
+#include <memory>
 
+#include "vri/core/vec3.hpp"
+#include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/transfer_function.hpp"
 
 namespace vri {
 
-struct Cubic;  // src/integrators/cubic.hpp
+struct Cubic;            // src/integrators/cubic.hpp
+class TfPieceSplitter;   // src/integrators/tf_pieces.hpp
 
 class PieceIntegrator {
  public:
@@ -22,19 +25,30 @@ class PieceIntegrator {
     double T = 1;
     double C[3] = {0, 0, 0};
   };
+  // Lighting along the piece (SPEC §5): c_lit = c a + b with the shader's terms
+  // for the gradient grad(t) (three cubics); the terms have kinks where N.d
+  // changes sign, at `kinks` (ascending), where the colour integral is cut too.
+  struct Lit {
+    const HeadlightShader* shader;
+    const Cubic* grad;
+    Vec3 dir;
+    const double* kinks;
+    int nkinks;
+  };
 
   // Keeps a reference to tf.
   explicit PieceIntegrator(const TransferFunction& tf);
+  ~PieceIntegrator();
 
-  // Integrates s(t), t in [0, len], into acc.
-  void integrate(const Cubic& s, double len, double error_per_length, Accumulator& acc) const;
-  // The linear case: s goes from s_front to s_back over length len.
+  // Integrates s(t), t in [0, len], into acc; unlit when lit is null.
+  void integrate(const Cubic& s, double len, double error_per_length, Accumulator& acc,
+                 const Lit* lit = nullptr) const;
+  // The linear, unlit case: s goes from s_front to s_back over length len.
   void integrate_linear(double s_front, double s_back, double len, double error_per_length,
                         Accumulator& acc) const;
 
  private:
-  const TransferFunction& tf_;
-  std::vector<int> opaque_prefix_;  // opaque_prefix_[i]: non-transparent segments before i
+  std::unique_ptr<const TfPieceSplitter> splitter_;
 };
 
 }  // namespace vri

@@ -1,0 +1,141 @@
+#include "vri/integrators/adaptive_simpson.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "simpson5.hpp"
+#include "vri/core/error.hpp"
+
+namespace vri {
+
+AdaptiveSimpsonIntegrator::AdaptiveSimpsonIntegrator(const GridVolume& volume,
+                                                     const TransferFunction& tf,
+                                                     const AdaptiveParams& params)
+    : volume_(volume), tf_(tf), tolerance_(params.tolerance) {
+  params.validate();
+  if (params.strategy == AdaptiveStrategy::Guaranteed)
+    throw Error("adaptive: AdaptiveSimpsonIntegrator implements coupled and decoupled only");
+  const double vu = volume.voxel_unit();
+  h0_ = params.h0 * vu;
+  hmin_ = params.hmin * vu;
+  hmax_ = params.hmax * vu;
+  coupled_ = params.strategy == AdaptiveStrategy::Coupled;
+}
+
+namespace {
+
+// The last evaluations along the ray, found again by their exact t. Step
+// positions are t + h*(k/4) with h halved or doubled (exact in binary), so a
+// point shared by a step and its halves, or by adjacent steps, compares equal.
+class SampleCache {
+ public:
+  template <class Eval>
+  const TfSample& get(double t, Eval&& eval) {
+    for (int i = 0; i < used_; ++i)
+      if (t_[i] == t) return v_[i];
+    next_ = (next_ + 1) % kSize;
+    used_ = std::max(used_, next_ + 1);
+    t_[next_] = t;
+    v_[next_] = eval(t);
+    return v_[next_];
+  }
+
+ private:
+  static constexpr int kSize = 12;
+  double t_[kSize];
+  TfSample v_[kSize];
+  int used_ = 0, next_ = -1;
+};
+
+}  // namespace
+
+Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const {
+  const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
+  if (!iv) return {0, 0, 0, 0};
+  SampleCache cache;
+  auto eval = [&](double t) {
+    ++stats.evaluations;
+    return tf_(volume_.sample(ray.at(t)));
+  };
+  TfSample f[5];
+  auto sample_step = [&](double t, double h) {
+    for (int k = 0; k < 5; ++k) f[k] = cache.get(t + h * (0.25 * k), eval);
+  };
+  auto tau_integrals = [&](double h, double& s, double& d) {
+    const double tau[5] = {f[0].tau, f[1].tau, f[2].tau, f[3].tau, f[4].tau};
+    s = simpson5::whole(tau, h);
+    d = simpson5::halves(tau, h);
+  };
+  // eps halves and doubles with the step: it is tolerance_ at h0.
+  auto accepted = [&](double err, double h) { return err <= tolerance_ * h / h0_ || h <= hmin_; };
+
+  const double t_end = iv->t1;
+  double T = 1;  // transmittance at the start of the next outer step
+  Rgba C{0, 0, 0, 0};
+  simpson5::StepControl inner{h0_}, outer{h0_};
+
+  // I_O of Algorithm 3: colour and alpha over [a, b].
+  auto outer_integral = [&](double a, double b) {
+    for (double u = a; u < b;) {
+      const double h = std::min(outer.h, b - u);
+      sample_step(u, h);
+      double tau[5], depth[5];
+      for (int k = 0; k < 5; ++k) tau[k] = f[k].tau;
+      simpson5::cumulative(tau, h, depth);
+      double g[4][5];
+      for (int k = 0; k < 5; ++k) {
+        const double w = f[k].tau * T * std::exp(-depth[k]);
+        g[0][k] = f[k].r * w;
+        g[1][k] = f[k].g * w;
+        g[2][k] = f[k].b * w;
+        g[3][k] = w;
+      }
+      double S[4], D[4], err = 0;
+      for (int c = 0; c < 4; ++c) {
+        S[c] = simpson5::whole(g[c], h);
+        D[c] = simpson5::halves(g[c], h);
+        err = std::max(err, simpson5::error(D[c], S[c]));
+      }
+      if (!accepted(err, h)) {
+        outer.failed(h, hmin_);
+        continue;
+      }
+      double tau_s, tau_d;
+      tau_integrals(h, tau_s, tau_d);
+      const double depth_err = T * simpson5::error(tau_d, tau_s);
+      for (int c = 0; c < 4; ++c) {
+        C[c] += simpson5::corrected(D[c], S[c]);
+        stats.error_estimate[c] += simpson5::error(D[c], S[c]) + depth_err;
+      }
+      T *= std::exp(-depth[4]);
+      if (stats.record_steps) stats.steps.push_back({true, u, h, C[3]});
+      outer.succeeded(hmax_);
+      u = h >= b - u ? b : u + h;
+    }
+  };
+
+  for (double t = iv->t0; t < t_end;) {
+    // I_I of Algorithm 3: the first step from t on which the optical depth is accurate.
+    double h;
+    for (;;) {
+      h = std::min(inner.h, t_end - t);
+      sample_step(t, h);
+      double s, d;
+      tau_integrals(h, s, d);
+      if (accepted(simpson5::error(d, s), h)) break;
+      inner.failed(h, hmin_);
+    }
+    inner.succeeded(hmax_);
+    if (stats.record_steps) stats.steps.push_back({false, t, h, 0});
+    const double b = h >= t_end - t ? t_end : t + h;
+    const bool empty = std::all_of(f, f + 5, [](const TfSample& v) { return v.tau == 0; });
+    if (!empty) {
+      if (coupled_) outer = simpson5::StepControl{h};
+      outer_integral(t, b);
+    }
+    t = b;
+  }
+  return C;
+}
+
+}  // namespace vri
