@@ -58,6 +58,10 @@ TEST(MeshScene, RefusesMismatchedMethodsAndKeys) {
   expect_refused([] { scene(R"({"file": "../data/tetra_mesh_small_ascii.vtk", "scalars": "rho"})"); },
                  "volume: mesh '");
   expect_refused([] { scene(R"({"builtin": "tetrahedralized"})"); }, "needs a 'grid'");
+  Lighting lit;
+  lit.enabled = true;
+  expect_refused([&] { make_integrator(mesh.method, mesh.mesh(), mesh.transfer_function, lit); },
+                 "lighting is not implemented for tetrahedral meshes");
   expect_refused([] { scene(R"({"builtin": "tetrahedralized", "tets_per_cell": 4, "grid": {"builtin": "sphere"}})"); },
                  "5 or 6");
 }
