@@ -105,6 +105,32 @@ TEST(TetWalk, RaysAlongEdgesAndFacesOfTheGrid) {
   }
 }
 
+// Two blocks meeting on the plane x = 3 with points of their own: the faces
+// there are coincident boundary faces (a non-conforming seam, like the
+// oxygen post's), and the walk must leave and re-enter without a gap.
+TEST(TetWalk, CrossesANonConformingSeam) {
+  const GridVolume a = test::volume_from({4, 4, 4}, field), b = test::volume_from({4, 4, 4}, field, {1, 1, 1}, {3, 0, 0});
+  const TetMesh ma = tetrahedralize(a, 6), mb = tetrahedralize(b, 5);
+  std::vector<Vec3> points = ma.points();
+  points.insert(points.end(), mb.points().begin(), mb.points().end());
+  std::vector<float> scalars = ma.scalars();
+  scalars.insert(scalars.end(), mb.scalars().begin(), mb.scalars().end());
+  std::vector<TetMesh::Tet> tets = ma.tets();
+  const auto offset = static_cast<std::int32_t>(ma.points().size());
+  for (auto t : mb.tets()) tets.push_back({t[0] + offset, t[1] + offset, t[2] + offset, t[3] + offset});
+  const TetMesh mesh(points, tets, scalars);
+  const TetWalk w(mesh);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.1, 2.9);
+  for (int n = 0; n < 400; ++n) {
+    const Vec3 o{-4, u(rng), u(rng)}, target{6, u(rng), u(rng)};
+    const Ray ray{o, normalize(target - o)};
+    const Walked r = walk(w, ray);
+    ASSERT_NEAR(r.length, clip_to_box(ray, {0, 0, 0}, {6, 3, 3})->length(), 1e-9) << n;
+    EXPECT_TRUE(r.scalars_ok);
+  }
+}
+
 TEST(TetWalk, MissesAndStartsOnlyAtTZero) {
   const TetMesh m = test::unit_tet();
   const TetWalk w(m);

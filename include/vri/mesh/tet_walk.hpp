@@ -11,6 +11,7 @@
 // The part of a ray before its first entry through a boundary face is not
 // seen: an eye inside the medium misses the medium between it and that face.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -39,8 +40,10 @@ class TetWalk {
   void for_each_segment(const Ray& ray, Visit&& visit) const {
     double t_exit = 0, t_entry = -1;
     std::int64_t skip = -1;
-    // Each boundary entry is strictly further than the previous one, so this ends.
-    while (auto hit = bvh_.next_entry(ray, t_exit, t_entry, skip)) {
+    // Each boundary entry is strictly further than the previous one, so this
+    // ends. A face coincident with the one just left (a non-conforming seam)
+    // may be hit a rounding error before the exit, hence the slack.
+    while (auto hit = bvh_.next_entry(ray, t_exit - 1e-9 * (1 + std::abs(t_exit)), t_entry, skip)) {
       t_entry = hit->t;
       std::int32_t tet = hit->tet;
       int entry_face = hit->face;
