@@ -4,6 +4,7 @@
 
 #include "vri/core/error.hpp"
 #include "vri/integrators/exact.hpp"
+#include "vri/integrators/preint1.hpp"
 #include "vri/integrators/riemann.hpp"
 
 namespace vri {
@@ -19,6 +20,8 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
                                             const TransferFunction& tf) {
   if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step);
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance);
+  if (spec.name == "preint1")
+    return std::make_unique<Preint1Integrator>(volume, tf, spec.step, spec.table_size, spec.builder);
   const auto& known = known_method_names();
   if (std::find(known.begin(), known.end(), spec.name) != known.end())
     throw Error("method '" + spec.name + "' is not implemented yet for regular grids");

@@ -230,6 +230,7 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     method.step = m.number(mj, "step", method.step);
     method.tolerance = m.number(mj, "tolerance", method.tolerance);
     method.table_size = m.integer(mj, "table_size", method.table_size);
+    method.builder = m.string(mj, "builder", method.builder);
   }
 
   Lighting lighting;

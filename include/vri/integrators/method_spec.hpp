@@ -10,6 +10,7 @@ struct MethodSpec {
   double step = 1.0;         // riemann, preint*: voxel units
   double tolerance = 1e-6;   // exact, adaptive
   int table_size = 256;      // preint*, pt*
+  std::string builder = "incremental";  // preint*: pre-integration table builder
 };
 
 }  // namespace vri
