@@ -1,47 +1,75 @@
 #include "vri/tables/incremental_builder.hpp"
 
-#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
+#include <numeric>
 #include <vector>
 
+#include "vri/tables/piece_weights.hpp"
 #include "vri/tables/slab_integral.hpp"
 
 namespace vri {
 
 namespace {
 
-void store(float* e, const SlabRgba& v) {
-  e[0] = static_cast<float>(v.r);
-  e[1] = static_cast<float>(v.g);
-  e[2] = static_cast<float>(v.b);
-  e[3] = static_cast<float>(v.a);
+using Entry = std::array<float, 4>;
+
+Entry to_entry(const SlabRgba& v) {
+  return {static_cast<float>(v.r), static_cast<float>(v.g), static_cast<float>(v.b), static_cast<float>(v.a)};
 }
 
-// The subrange integrals of one diagonal m (Lum et al. 2004, Fig. 5): piece k
-// joins table scalars k and k+1 and has length l/m; bins are pieces
-// [b m, (b+1) m). Within each bin, for piece k:
+// What every diagonal needs from the transfer function: per piece k (table
+// scalars k, k+1) its end extinctions, and the pieces by decreasing
+// extinction, so the pieces too thick for the series at piece length d are
+// a prefix of `by_thickness`.
+struct Pieces {
+  std::vector<double> tau;         // tau[k] at table scalar k
+  std::vector<int> by_thickness;   // piece indices, max(tau_k, tau_k+1) decreasing
+  explicit Pieces(const DiscreteTf& tf) : tau(tf.size()), by_thickness(tf.size() - 1) {
+    for (int k = 0; k < tf.size(); ++k) tau[k] = tf[k].tau;
+    std::iota(by_thickness.begin(), by_thickness.end(), 0);
+    std::stable_sort(by_thickness.begin(), by_thickness.end(),
+                     [&](int a, int b) { return thickest(a) > thickest(b); });
+  }
+  double thickest(int k) const { return std::max(tau[k], tau[k + 1]); }
+};
+
+// Scratch of one thread. For diagonal m, piece k has length l/m; bins are
+// pieces [b m, (b+1) m) (Lum et al. 2004, Fig. 5). Within each bin, for piece k:
 //   head[k] = pieces bin_start..k   (left-hand subrange grown to the right)
 //   tail[k] = pieces k..bin_end-1   (right-hand subrange grown to the left)
 // forward (front = lower scalar) and backward (front = higher scalar).
-struct Subranges {
+struct Scratch {
+  std::vector<PieceWeights> w;
   std::vector<SlabRgba> head_f, tail_f, head_b, tail_b;
-  void resize(int pieces) {
-    for (auto* v : {&head_f, &tail_f, &head_b, &tail_b}) v->resize(pieces);
-  }
+  std::vector<Entry> upper, lower;  // kGroup diagonals, n entries each
 };
 
-void build_diagonal(const DiscreteTf& tf, double length, int m, Subranges& s, PreintegrationTable& table) {
-  const int n = tf.size(), pieces = n - 1;
+// Diagonal m: upper[i] = entry (i, i+m), lower[i] = entry (i+m, i), i + m < n.
+void build_diagonal(const DiscreteTf& tf, const Pieces& pieces, double length, int m, Scratch& s,
+                    Entry* upper, Entry* lower) {
+  const int n = tf.size(), count = n - 1;
   const double d = length / m;
-  for (int k = 0; k < pieces; ++k) {
-    const PiecePair p = linear_piece(tf[k], tf[k + 1], d);
-    s.head_f[k] = s.tail_f[k] = p.forward;
-    s.head_b[k] = s.tail_b[k] = p.backward;
+  // The series for every piece (a branch-free loop), then the thick ones again.
+  for (int k = 0; k < count; ++k)
+    s.w[k] = thin_piece_weights(std::min(pieces.tau[k] * d, piece_series::kThin),
+                                std::min(pieces.tau[k + 1] * d, piece_series::kThin));
+  for (int k : pieces.by_thickness) {
+    if (pieces.thickest(k) * d <= piece_series::kThin) break;
+    s.w[k] = thick_piece_weights(pieces.tau[k] * d, pieces.tau[k + 1] * d);
   }
-  for (int start = 0; start < pieces; start += m) {
-    const int end = std::min(start + m, pieces);
+  for (int k = 0; k < count; ++k) {
+    const TfSample& p = tf[k];
+    const TfSample& q = tf[k + 1];
+    const PieceWeights& w = s.w[k];
+    s.head_f[k] = s.tail_f[k] = {p.r * w.fp + q.r * w.fq, p.g * w.fp + q.g * w.fq, p.b * w.fp + q.b * w.fq, w.alpha};
+    s.head_b[k] = s.tail_b[k] = {q.r * w.bq + p.r * w.bp, q.g * w.bq + p.g * w.bp, q.b * w.bq + p.b * w.bp, w.alpha};
+  }
+  for (int start = 0; start < count; start += m) {
+    const int end = std::min(start + m, count);
     for (int k = start + 1; k < end; ++k) {
       s.head_f[k] = over(s.head_f[k - 1], s.head_f[k]);
       s.head_b[k] = over(s.head_b[k], s.head_b[k - 1]);
@@ -56,13 +84,29 @@ void build_diagonal(const DiscreteTf& tf, double length, int m, Subranges& s, Pr
   for (int i = 0; i + m < n; ++i) {
     const int e = i + m - 1;
     if (i % m == 0) {
-      store(table.entry(i, i + m), s.tail_f[i]);
-      store(table.entry(i + m, i), s.tail_b[i]);
+      upper[i] = to_entry(s.tail_f[i]);
+      lower[i] = to_entry(s.tail_b[i]);
     } else {
-      store(table.entry(i, i + m), over(s.tail_f[i], s.head_f[e]));
-      store(table.entry(i + m, i), over(s.head_b[e], s.tail_b[i]));
+      upper[i] = to_entry(over(s.tail_f[i], s.head_f[e]));
+      lower[i] = to_entry(over(s.head_b[e], s.tail_b[i]));
     }
   }
+}
+
+// Diagonals are built kGroup at a time and stored row by row: entries
+// (i, i+m0 .. i+m0+kGroup-1) are adjacent in memory, one diagonal is not.
+constexpr int kGroup = 32;
+
+void build_group(const DiscreteTf& tf, const Pieces& pieces, double length, int m0, Scratch& s,
+                 PreintegrationTable& table) {
+  const int n = tf.size(), m1 = std::min(m0 + kGroup, n);
+  const auto at = [n](int m_offset, int i) { return std::size_t(m_offset) * n + i; };
+  for (int m = m0; m < m1; ++m) build_diagonal(tf, pieces, length, m, s, &s.upper[at(m - m0, 0)], &s.lower[at(m - m0, 0)]);
+  for (int r = 0; r < n; ++r)
+    for (int m = m0; m < m1; ++m) {
+      if (r + m < n) std::copy_n(s.upper[at(m - m0, r)].data(), 4, table.entry(r, r + m));
+      if (r - m >= 0) std::copy_n(s.lower[at(m - m0, r - m)].data(), 4, table.entry(r, r - m));
+    }
 }
 
 }  // namespace
@@ -71,12 +115,20 @@ PreintegrationTable IncrementalBuilder::build(const DiscreteTf& tf, double lengt
   check_slab_length(length);
   PreintegrationTable table(tf.axis(), length);
   const int n = tf.size();
-  for (int i = 0; i < n; ++i) store(table.entry(i, i), homogeneous_slab(tf[i], length));
-  tbb::parallel_for(tbb::blocked_range<int>(1, n), [&](const tbb::blocked_range<int>& r) {
-    Subranges s;
-    s.resize(n - 1);
-    for (int m = r.begin(); m != r.end(); ++m) build_diagonal(tf, length, m, s, table);
+  for (int i = 0; i < n; ++i) std::copy_n(to_entry(homogeneous_slab(tf[i], length)).data(), 4, table.entry(i, i));
+  const Pieces pieces(tf);
+  // Scratch is reused by whichever thread runs a group and fully overwritten
+  // before it is read, so the bytes do not depend on the thread count.
+  tbb::enumerable_thread_specific<Scratch> scratch([n] {
+    Scratch s;
+    s.w.resize(n - 1);
+    for (auto* v : {&s.head_f, &s.tail_f, &s.head_b, &s.tail_b}) v->resize(n - 1);
+    s.upper.resize(std::size_t(kGroup) * n);
+    s.lower.resize(std::size_t(kGroup) * n);
+    return s;
   });
+  const int groups = (n - 1 + kGroup - 1) / kGroup;
+  tbb::parallel_for(0, groups, [&](int g) { build_group(tf, pieces, length, 1 + g * kGroup, scratch.local(), table); });
   return table;
 }
 

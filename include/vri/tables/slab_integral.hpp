@@ -24,12 +24,7 @@ inline SlabRgba homogeneous_slab(const TfSample& v, double length) {
 
 // One piece of length d over which (r, g, b, tau) run linearly from `p` to
 // `q`, integrated in both directions: forward (p at the front) and backward
-// (q at the front). Closed form up to one smooth 1-D integral, see
-// docs/PREINTEGRATION.md: with A = tau_p d, B = tau_q d,
-//   E = exp(-(A+B)/2),  J(A,B) = int_0^1 exp(-A x - (B-A) x^2 / 2) dx,
-//   C_forward = c_p (1 - J(A,B)) + c_q (J(A,B) - E),   alpha = 1 - E,
-// J by 6-point Gauss-Legendre on panels of optical depth <= 1 (relative error
-// below 1e-12); the backward J(B,A) reuses the forward exponentials.
+// (q at the front), by piece_weights.hpp.
 struct PiecePair {
   SlabRgba forward, backward;
 };
