@@ -43,7 +43,8 @@ struct Pieces {
 //   tail[k] = pieces k..bin_end-1   (right-hand subrange grown to the left)
 // forward (front = lower scalar) and backward (front = higher scalar).
 struct Scratch {
-  std::vector<PieceWeights> w;
+  // Piece weights as separate arrays, so the series loop vectorises.
+  std::vector<double> fp, fq, bq, bp, alpha;
   std::vector<SlabRgba> head_f, tail_f, head_b, tail_b;
   std::vector<Entry> upper, lower;  // kGroup diagonals, n entries each
 };
@@ -54,19 +55,25 @@ void build_diagonal(const DiscreteTf& tf, const Pieces& pieces, double length, i
   const int n = tf.size(), count = n - 1;
   const double d = length / m;
   // The series for every piece (a branch-free loop), then the thick ones again.
+  const auto set = [&s](int k, const PieceWeights& w) {
+    s.fp[k] = w.fp, s.fq[k] = w.fq, s.bq[k] = w.bq, s.bp[k] = w.bp, s.alpha[k] = w.alpha;
+  };
+  const double* tau = pieces.tau.data();
   for (int k = 0; k < count; ++k)
-    s.w[k] = thin_piece_weights(std::min(pieces.tau[k] * d, piece_series::kThin),
-                                std::min(pieces.tau[k + 1] * d, piece_series::kThin));
+    set(k, thin_piece_weights(std::min(tau[k] * d, piece_series::kThin), std::min(tau[k + 1] * d, piece_series::kThin)));
   for (int k : pieces.by_thickness) {
     if (pieces.thickest(k) * d <= piece_series::kThin) break;
-    s.w[k] = thick_piece_weights(pieces.tau[k] * d, pieces.tau[k + 1] * d);
+    set(k, thick_piece_weights(tau[k] * d, tau[k + 1] * d));
   }
   for (int k = 0; k < count; ++k) {
     const TfSample& p = tf[k];
     const TfSample& q = tf[k + 1];
-    const PieceWeights& w = s.w[k];
-    s.head_f[k] = s.tail_f[k] = {p.r * w.fp + q.r * w.fq, p.g * w.fp + q.g * w.fq, p.b * w.fp + q.b * w.fq, w.alpha};
-    s.head_b[k] = s.tail_b[k] = {q.r * w.bq + p.r * w.bp, q.g * w.bq + p.g * w.bp, q.b * w.bq + p.b * w.bp, w.alpha};
+    const PieceWeights w{s.fp[k], s.fq[k], s.bq[k], s.bp[k], s.alpha[k]};
+    // Built in registers, then stored: chained stores would be reloaded.
+    const SlabRgba f{p.r * w.fp + q.r * w.fq, p.g * w.fp + q.g * w.fq, p.b * w.fp + q.b * w.fq, w.alpha};
+    const SlabRgba b{q.r * w.bq + p.r * w.bp, q.g * w.bq + p.g * w.bp, q.b * w.bq + p.b * w.bp, w.alpha};
+    s.head_f[k] = s.tail_f[k] = f;
+    s.head_b[k] = s.tail_b[k] = b;
   }
   for (int start = 0; start < count; start += m) {
     const int end = std::min(start + m, count);
@@ -121,7 +128,7 @@ PreintegrationTable IncrementalBuilder::build(const DiscreteTf& tf, double lengt
   // before it is read, so the bytes do not depend on the thread count.
   tbb::enumerable_thread_specific<Scratch> scratch([n] {
     Scratch s;
-    s.w.resize(n - 1);
+    for (auto* v : {&s.fp, &s.fq, &s.bq, &s.bp, &s.alpha}) v->resize(n - 1);
     for (auto* v : {&s.head_f, &s.tail_f, &s.head_b, &s.tail_b}) v->resize(n - 1);
     s.upper.resize(std::size_t(kGroup) * n);
     s.lower.resize(std::size_t(kGroup) * n);
