@@ -1,5 +1,6 @@
 // vri table --tf TF.json --size N [--order 1|2] [--length L]
 //   [--lengths M --max-length LMAX] [--builder NAME] -o TABLE.npy   (SPEC §10)
+//   [--steps K] [--accumulation 8bit|12bit|fp16|fp32]               (sliced only)
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include "vri/core/error.hpp"
 #include "vri/io/npy.hpp"
 #include "vri/scene/scene.hpp"
+#include "vri/tables/sliced_builder.hpp"
 #include "vri/tables/table_builder.hpp"
 
 namespace vri::cli {
@@ -18,8 +20,8 @@ namespace vri::cli {
 namespace {
 
 struct TableArgs {
-  std::string tf, output, builder = "incremental";
-  int size = 256, order = 1;
+  std::string tf, output, builder = "incremental", accumulation = "fp32";
+  int size = 256, order = 1, steps = 0;
   double length = 1;
   std::optional<int> lengths;
   std::optional<double> max_length;
@@ -33,7 +35,9 @@ int run_table(const TableArgs& args) {
     throw Error("--lengths and --max-length go together");
   const TransferFunction tf = load_transfer_function(args.tf);
   const DiscreteTf discrete(tf, args.size);
-  const auto builder = make_table_builder(args.builder);
+  const std::unique_ptr<TableBuilder> builder =
+      args.builder == "sliced" ? std::make_unique<SlicedBuilder>(args.steps, parse_accumulation(args.accumulation))
+                               : make_table_builder(args.builder);
   const std::size_t n = args.size;
 
   const auto start = std::chrono::steady_clock::now();
@@ -66,7 +70,9 @@ Runner add_table_command(CLI::App& app) {
   cmd->add_option("--length", args->length, "Slab length in world units (default 1)");
   cmd->add_option("--lengths", args->lengths, "Number of slab lengths M: shape (M, N, N, 4)");
   cmd->add_option("--max-length", args->max_length, "Largest slab length LMAX (with --lengths)");
-  cmd->add_option("--builder", args->builder, "brute, incremental or engel (default incremental)");
+  cmd->add_option("--builder", args->builder, "brute, incremental, sliced or engel (default incremental)");
+  cmd->add_option("--steps", args->steps, "sliced: integration steps (default 2N)");
+  cmd->add_option("--accumulation", args->accumulation, "sliced: 8bit, 12bit, fp16 or fp32 (default fp32)");
   cmd->add_option("-o,--output", args->output, "Output table (.npy)")->required();
   return [args] { return run_table(*args); };
 }

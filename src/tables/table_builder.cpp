@@ -10,6 +10,7 @@
 #include "vri/tables/brute_builder.hpp"
 #include "vri/tables/engel_builder.hpp"
 #include "vri/tables/incremental_builder.hpp"
+#include "vri/tables/sliced_builder.hpp"
 
 namespace vri {
 
@@ -34,13 +35,14 @@ LengthTable build_length_table(const TableBuilder& builder, const DiscreteTf& tf
 }
 
 const std::vector<std::string>& known_builder_names() {
-  static const std::vector<std::string> names = {"brute", "incremental", "engel"};
+  static const std::vector<std::string> names = {"brute", "incremental", "sliced", "engel"};
   return names;
 }
 
 std::unique_ptr<TableBuilder> make_table_builder(const std::string& name) {
   if (name == "brute") return std::make_unique<BruteBuilder>();
   if (name == "incremental") return std::make_unique<IncrementalBuilder>();
+  if (name == "sliced") return std::make_unique<SlicedBuilder>();
   if (name == "engel") return std::make_unique<EngelBuilder>();
   std::string list;
   for (const auto& n : known_builder_names()) list += (list.empty() ? "" : ", ") + n;

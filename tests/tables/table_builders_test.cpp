@@ -114,7 +114,7 @@ TEST(LengthTable, EverySliceIsTheTableForItsLength) {
 
 TEST(TableBuilders, SameBytesForAnyThreadCount) {
   const DiscreteTf tf(test::random_spiky_tf(17, 2.0), 100);
-  for (const char* name : {"brute", "incremental", "engel"}) {
+  for (const char* name : {"brute", "incremental", "sliced", "engel"}) {
     const auto builder = make_table_builder(name);
     std::vector<float> one, many;
     {

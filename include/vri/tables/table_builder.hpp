@@ -31,7 +31,7 @@ inline constexpr std::size_t kMaxLengthTableEntries = std::size_t{1} << 28;
 LengthTable build_length_table(const TableBuilder& builder, const DiscreteTf& tf, int lengths,
                                double max_length);
 
-// "brute", "incremental", "engel"; throws vri::Error naming the known ones otherwise.
+// "brute", "incremental", "sliced" (its defaults), "engel"; throws vri::Error naming the known ones otherwise.
 std::unique_ptr<TableBuilder> make_table_builder(const std::string& name);
 const std::vector<std::string>& known_builder_names();
 
