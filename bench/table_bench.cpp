@@ -38,6 +38,10 @@ BENCHMARK_CAPTURE(BM_Table, brute, "brute")
 BENCHMARK_CAPTURE(BM_Table, incremental, "incremental")
     ->ArgsProduct({{32, 64, 128, 256, 512, 1024, 2048}, {1, 2}})
     ->Unit(benchmark::kMillisecond);
+// Roettger & Ertl 2002 slice-parallel scheme, 2N steps, fp32 accumulation: O(N^3).
+BENCHMARK_CAPTURE(BM_Table, sliced, "sliced")
+    ->ArgsProduct({{32, 64, 128, 256}, {1}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Table, engel, "engel")
     ->ArgsProduct({{32, 64, 128, 256, 512, 1024, 2048}, {1}})
     ->Unit(benchmark::kMillisecond);
