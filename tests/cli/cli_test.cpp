@@ -1,0 +1,111 @@
+// End-to-end tests of the vri program: real invocations, exit codes, the one
+// line on stderr, and no output file left behind on failure.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "test_support.hpp"
+#include "vri/io/npy.hpp"
+
+namespace vri {
+namespace {
+
+struct ProcessResult {
+  int code;
+  std::string out, err;
+};
+
+ProcessResult run(const std::string& args, const test::TempDir& dir) {
+  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd = std::string(VRI_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  auto slurp = [](const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+}
+
+std::string scene_with(const test::TempDir& dir, const std::string& body) {
+  const auto p = dir / "scene.json";
+  test::write_text(p, body);
+  return p.string();
+}
+
+const std::string kGood = R"({"volume": {"builtin": "sphere", "dims": [12, 12, 12]},
+  "transfer_function": {"points": [[-6, 1, 0.5, 0, 0.5], [0, 0, 0, 1, 0]]},
+  "camera": {"eye": [5.5, 5.5, 40], "target": [5.5, 5.5, 5.5], "width": 16, "height": 12},
+  "method": {"name": "exact", "tolerance": 1e-5}})";
+
+TEST(Cli, RendersComparesAndOverrides) {
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, kGood);
+  const auto a = dir / "a.npy", b = dir / "b.npy", png = dir / "a.png";
+  ProcessResult r = run("render " + scene + " -o " + a.string() + " --threads 2", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto img = read_npy(a);
+  EXPECT_EQ(img.shape, (std::vector<std::size_t>{12, 16, 4}));
+  r = run("render " + scene + " -o " + b.string() + " --method riemann --step 0.5 --width 16 --height 12", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run("render " + scene + " -o " + png.string() + " --width 7 --height 5", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(png));
+  r = run("compare " + a.string() + " " + a.string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("a        0.000000"), std::string::npos) << r.out;
+  r = run("compare " + a.string() + " " + b.string() + " --tolerance 0", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.find("a        0.000000"), std::string::npos) << "riemann differs from exact: " << r.out;
+}
+
+// Each bad input: non-zero exit, exactly one line on stderr, no output file.
+TEST(Cli, BadInputIsRefusedCleanly) {
+  test::TempDir dir;
+  const std::string good = scene_with(dir, kGood);
+  test::write_text(dir / "broken.json", "{\"volume\": ");
+  test::write_text(dir / "unsorted.json", R"({"volume": {"builtin": "sphere", "dims": [8, 8, 8]},
+    "transfer_function": {"points": [[1, 1, 1, 1, 1], [0, 1, 1, 1, 1]]},
+    "camera": {"eye": [0, 0, 9], "target": [0, 0, 0]}})");
+  test::write_text(dir / "huge.json", R"({"volume": {"builtin": "random", "dims": [4096, 4096, 4096]},
+    "transfer_function": {"points": [[0, 1, 1, 1, 1]]}, "camera": {"eye": [0, 0, 9], "target": [0, 0, 0]}})");
+  test::write_text(dir / "short.raw", std::string(100, 'x'));
+  test::write_text(dir / "shortraw.json", R"({"volume": {"file": "short.raw", "dims": [8, 8, 8]},
+    "transfer_function": {"points": [[0, 1, 1, 1, 1]]}, "camera": {"eye": [0, 0, 9], "target": [0, 0, 0]}})");
+  const auto out = (dir / "out.npy").string();
+  const std::vector<std::string> cases = {
+      "render " + (dir / "missing.json").string() + " -o " + out,
+      "render " + (dir / "broken.json").string() + " -o " + out,
+      "render " + (dir / "unsorted.json").string() + " -o " + out,
+      "render " + (dir / "huge.json").string() + " -o " + out,
+      "render " + (dir / "shortraw.json").string() + " -o " + out,
+      "render " + good + " -o " + out + " --method nonsense",
+      "render " + good + " -o " + out + " --method riemann --step -1",
+      "render " + good + " -o " + out + " --width 0",
+      "render " + good + " -o " + out + " --width 100000 --height 100000",
+      "render " + good + " -o " + out + " --tolerance 5",
+      "render " + good + " -o " + out + " --threads -3",
+      "render " + good + " -o " + (dir / "out.tiff").string(),
+      "render " + good + " -o " + (dir / "no_such_dir" / "x.npy").string(),
+      "render " + good,
+      "frobnicate",
+      "compare " + out + " " + out,
+  };
+  for (const auto& args : cases) {
+    const ProcessResult r = run(args, dir);
+    EXPECT_NE(r.code, 0) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+    EXPECT_EQ(r.err.rfind("vri: error: ", 0), 0u) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  }
+  // nothing but stdout/stderr captures was left in the folder
+  for (const auto& e : std::filesystem::directory_iterator(dir.path))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+}  // namespace
+}  // namespace vri

@@ -1,0 +1,57 @@
+#include "integrators/cubic.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "test_support.hpp"
+#include "vri/volume/builtin_volumes.hpp"
+
+namespace vri {
+namespace {
+
+TEST(Cubic, TrilinearAlongMatchesSamplingInsideEveryCell) {
+  const auto vol = random_field({6, 5, 7}, 11);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int checked = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    const Vec3 target{2.5 + u(rng), 2 + u(rng), 3 + u(rng)};
+    const Ray ray{target - 15 * normalize({u(rng), u(rng), u(rng)}), {}};
+    const Ray r{ray.origin, normalize(target - ray.origin)};
+    const auto iv = clip_to_box(r, vol.box_lo(), vol.box_hi());
+    ASSERT_TRUE(iv);
+    for_each_cell_segment(vol, r, *iv, [&](const CellSegment& seg) {
+      const Cubic s = trilinear_along(vol, seg);
+      for (double f : {0.0, 0.3, 0.71, 1.0}) {
+        const double t = f * (seg.tb - seg.ta);
+        EXPECT_NEAR(s(t), vol.sample(r.at(seg.ta + t)), 1e-6);
+        ++checked;
+      }
+      return true;
+    });
+  }
+  EXPECT_GT(checked, 500);
+}
+
+TEST(Cubic, CriticalPointsAndMonotoneRoots) {
+  // (t - 1)(t - 2)(t - 4) = t^3 - 7t^2 + 14t - 8; s'(t) = 3t^2 - 14t + 14
+  const Cubic s{{-8, 14, -7, 1}};
+  double crit[2];
+  ASSERT_EQ(s.critical_points(5, crit), 2);
+  EXPECT_NEAR(crit[0], (14 - std::sqrt(28.0)) / 6, 1e-14);
+  EXPECT_NEAR(crit[1], (14 + std::sqrt(28.0)) / 6, 1e-14);
+  EXPECT_EQ(s.critical_points(1, crit), 0);  // both beyond t = 1
+  EXPECT_NEAR(s.solve_monotone(0, 0, crit[0] - 1e-3), 1, 1e-14);
+  EXPECT_NEAR(s.solve_monotone(0, 3.2, 5), 4, 1e-14);
+  EXPECT_NEAR(s.solve_monotone(-0.5, 1.5, 3.2), 2 + 0.0, 0.6);  // lies in the falling run
+  const double r = s.solve_monotone(-0.5, (14 - std::sqrt(28.0)) / 6, (14 + std::sqrt(28.0)) / 6);
+  EXPECT_NEAR(s(r), -0.5, 1e-13);
+  // A straight line has no critical points.
+  const Cubic line{{1, 2, 0, 0}};
+  EXPECT_EQ(line.critical_points(10, crit), 0);
+  EXPECT_NEAR(line.solve_monotone(4, 0, 10), 1.5, 1e-15);
+}
+
+}  // namespace
+}  // namespace vri

@@ -1,0 +1,86 @@
+#include "vri/io/nrrd.hpp"
+
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+#include "vri/core/error.hpp"
+#include "vri/volume/builtin_volumes.hpp"
+
+namespace vri {
+namespace {
+
+void expect_same(const GridVolume& a, const GridVolume& b) {
+  EXPECT_EQ(a.dims(), b.dims());
+  EXPECT_EQ(a.values(), b.values());
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_DOUBLE_EQ(a.spacing()[i], b.spacing()[i]);
+    EXPECT_DOUBLE_EQ(a.origin()[i], b.origin()[i]);
+  }
+}
+
+TEST(Nrrd, RoundTripsAttachedAndDetachedRawAndGzip) {
+  test::TempDir dir;
+  GridVolume vol = random_field({5, 4, 3}, 2);
+  vol.set_spacing({0.5, 1.25, 2});
+  vol.set_origin({-1, 2, 3.5});
+  for (auto enc : {NrrdEncoding::Raw, NrrdEncoding::Gzip})
+    for (const char* name : {"v.nrrd", "v.nhdr"}) {
+      write_nrrd(dir / name, vol, enc);
+      expect_same(read_nrrd(dir / name), vol);
+    }
+}
+
+TEST(Nrrd, ReadsHandWrittenHeaders) {
+  test::TempDir dir;
+  // big-endian uint16, space directions (spacing 2, 3, 4), a byte skip and a comment
+  std::string header =
+      "NRRD0005\n# a comment\ntype: unsigned short\ndimension: 3\nsizes: 2 2 2\n"
+      "space: right-anterior-superior\nspace directions: (2,0,0) (0,-3,0) (0,0,4)\n"
+      "space origin: (1,2,3)\nendian: big\nencoding: raw\nbyte skip: 2\nkey:=value\n\n";
+  std::vector<unsigned char> bytes(header.begin(), header.end());
+  bytes.push_back(0xAA);  // skipped
+  bytes.push_back(0xBB);
+  for (int i = 0; i < 8; ++i) {
+    bytes.push_back(0x01);
+    bytes.push_back(static_cast<unsigned char>(i));
+  }
+  test::write_bytes(dir / "h.nrrd", bytes);
+  const auto vol = read_nrrd(dir / "h.nrrd");
+  EXPECT_FLOAT_EQ(vol.at(1, 1, 1), 256 + 7);
+  EXPECT_DOUBLE_EQ(vol.spacing().y, 3);
+  EXPECT_DOUBLE_EQ(vol.spacing().z, 4);
+  EXPECT_DOUBLE_EQ(vol.origin().z, 3);
+  // ascii encoding with a leading size-1 axis
+  test::write_text(dir / "a.nrrd", "NRRD0004\ntype: float\ndimension: 4\nsizes: 1 2 2 2\nencoding: ascii\n\n1 2 3 4\n5 6 7 8.5\n");
+  EXPECT_FLOAT_EQ(read_nrrd(dir / "a.nrrd").at(1, 1, 1), 8.5);
+}
+
+TEST(Nrrd, BundledEngineDecodes) {
+  const auto vol = read_nrrd(test::source_path("data/engine.nrrd"));
+  EXPECT_EQ(vol.dims(), (std::array<int, 3>{256, 256, 128}));
+  double sum = 0;
+  for (float v : vol.values()) sum += v;
+  EXPECT_EQ(sum, 187475057.0);  // the sum of the raw file listed in data/PROVENANCE.md
+}
+
+TEST(Nrrd, RefusesBrokenFiles) {
+  test::TempDir dir;
+  const std::string ok = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\n";
+  auto refuse = [&](const std::string& text) {
+    test::write_text(dir / "bad.nrrd", text);
+    EXPECT_THROW(read_nrrd(dir / "bad.nrrd"), Error) << text;
+  };
+  refuse("P6\n");                                                   // not NRRD
+  refuse(ok + "encoding: raw\n\n1234567");                          // one byte short
+  refuse(ok + "encoding: raw\n\n123456789");                        // one byte long
+  refuse(ok + "encoding: gzip\n\nnot gzip at all");                 // corrupt gzip
+  refuse(ok + "encoding: bzip2\n\n12345678");                       // unsupported encoding
+  refuse("NRRD0004\ntype: uint8\ndimension: 2\nsizes: 2 2\nencoding: raw\n\n1234");
+  refuse("NRRD0004\ntype: quaternion\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n12345678");
+  refuse("NRRD0004\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n12345678");  // no type
+  refuse(ok + "encoding: raw\ndata file: missing.raw\n");
+  EXPECT_THROW(read_nrrd(dir / "absent.nrrd"), Error);
+}
+
+}  // namespace
+}  // namespace vri

@@ -1,0 +1,31 @@
+#include "vri/render/image_compare.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "vri/core/error.hpp"
+
+namespace vri {
+namespace {
+
+TEST(CompareImages, SharesRmsAndMaxPerChannel) {
+  // two pixels, two channels: differences (0.1, 0) and (0.3, 0.02)
+  const std::vector<float> a{0.1f, 0.f, 0.5f, 0.52f}, b{0.f, 0.f, 0.2f, 0.5f};
+  const auto d = compare_images(a, b, 2, 0.05);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_DOUBLE_EQ(d[0].share_over, 1.0);
+  EXPECT_NEAR(d[0].rms, std::sqrt((0.01 + 0.09) / 2), 1e-7);
+  EXPECT_NEAR(d[0].max, 0.3, 1e-7);
+  EXPECT_DOUBLE_EQ(d[1].share_over, 0.0);
+  EXPECT_NEAR(d[1].max, 0.02, 1e-7);
+}
+
+TEST(CompareImages, NanCountsAsOverAndSizesMustMatch) {
+  const auto d = compare_images({NAN, 0.f}, {0.f, 0.f}, 1, 0.1);
+  EXPECT_DOUBLE_EQ(d[0].share_over, 0.5);
+  EXPECT_THROW(compare_images({0.f}, {0.f, 0.f}, 1, 0.1), Error);
+}
+
+}  // namespace
+}  // namespace vri

@@ -1,0 +1,106 @@
+#include "vri/scene/scene.hpp"
+
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+#include "vri/core/error.hpp"
+#include "vri/integrators/make_integrator.hpp"
+
+namespace vri {
+namespace {
+
+const std::string kCamera = R"("camera": {"eye": [20, 20, 60], "target": [20, 20, 20], "width": 8, "height": 6})";
+
+TEST(SceneLoader, ReadsEveryKeyWithDefaults) {
+  const Scene s = parse_scene(R"({
+    "volume": {"builtin": "marschner_lobb", "dims": [9, 9, 9], "spacing": [0.5, 0.5, 1], "origin": [1, 2, 3]},
+    "transfer_function": {"opacity_points": [[0, 1, 0, 0, 0.5], [1, 0, 0, 1, 0.5]], "unit_distance": 2},
+    "camera": {"eye": [0, 0, 10], "target": [0, 0, 0], "fov_y": 45, "width": 30, "height": 20},
+    "background": [0.1, 0.2, 0.3],
+    "method": {"name": "riemann", "step": 0.25, "tolerance": 1e-3, "table_size": 128},
+    "extra_key_for_the_future": 1})",
+                              ".");
+  EXPECT_EQ(s.volume.dims(), (std::array<int, 3>{9, 9, 9}));
+  EXPECT_DOUBLE_EQ(s.volume.spacing().x, 0.5);
+  EXPECT_DOUBLE_EQ(s.volume.origin().z, 3);
+  EXPECT_NEAR(s.transfer_function(0.5).tau, std::log(2.0) / 2, 1e-15);
+  EXPECT_DOUBLE_EQ(s.camera.fov_y, 45);
+  EXPECT_DOUBLE_EQ(s.camera.up.y, 1);  // default up
+  EXPECT_EQ(s.camera.width, 30);
+  EXPECT_DOUBLE_EQ(s.background.z, 0.3);
+  EXPECT_EQ(s.method.name, "riemann");
+  EXPECT_DOUBLE_EQ(s.method.step, 0.25);
+  EXPECT_EQ(s.method.table_size, 128);
+}
+
+TEST(SceneLoader, PathsAreRelativeToTheSceneFile) {
+  const Scene s = load_scene(test::source_path("scenes/bucky.json"));
+  EXPECT_EQ(s.volume.dims(), (std::array<int, 3>{32, 32, 32}));
+  EXPECT_EQ(s.transfer_function.points().size(), 5u);
+}
+
+TEST(SceneLoader, EveryBundledSceneLoads) {
+  for (const char* name : {"neghip", "fuel", "bucky", "silicium", "hydrogen_atom", "marschner_lobb", "tooth", "engine",
+                           "bonsai", "boston_teapot"}) {
+    const Scene s = load_scene(test::source_path(std::string("scenes/") + name + ".json"));
+    EXPECT_GT(s.volume.max_value(), s.volume.min_value()) << name;
+    EXPECT_NO_THROW(make_integrator(s.method, s.volume, s.transfer_function)) << name;
+  }
+}
+
+void expect_refused(const std::string& json, const std::string& fragment) {
+  try {
+    parse_scene(json, test::source_path("scenes"), "scene");
+    ADD_FAILURE() << "accepted: " << json;
+  } catch (const Error& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(fragment), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
+  }
+}
+
+TEST(SceneLoader, RefusesBadScenesWithOneClearLine) {
+  const std::string tf = R"("transfer_function": {"points": [[0, 1, 1, 1, 0.1]]})";
+  const std::string vol = R"("volume": {"builtin": "sphere", "dims": [8, 8, 8]})";
+  expect_refused("{ not json", "malformed JSON");
+  expect_refused("[1, 2]", "must be a JSON object");
+  expect_refused("{" + tf + ", " + kCamera + "}", "missing 'volume'");
+  expect_refused("{" + vol + ", " + kCamera + R"(, "transfer_function": {"points": [[5, 1, 1, 1, 0.1], [1, 1, 1, 1, 0.1]]}})", "sorted");
+  expect_refused("{" + vol + ", " + kCamera + R"(, "transfer_function": {"points": [[5, 1, 1, 1, -0.1]]}})", "tau");
+  expect_refused("{" + vol + ", " + kCamera + R"(, "transfer_function": {"points": [[5, 1, 1]]}})", "5 numbers");
+  expect_refused("{" + vol + ", " + kCamera +
+                     R"(, "transfer_function": {"opacity_points": [[5, 1, 1, 1, 1.0]], "unit_distance": 1}})",
+                 "opacity");
+  expect_refused("{" + vol + ", " + tf + R"(, "camera": {"eye": [1, 1, 1], "target": [1, 1, 1]}})", "same point");
+  expect_refused("{" + vol + ", " + tf + R"(, "camera": {"eye": [0, 5, 0], "target": [0, 0, 0]}})", "parallel");
+  expect_refused("{" + vol + ", " + tf + R"(, "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "width": 0}})", "positive");
+  expect_refused("{" + vol + ", " + tf + R"(, "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "width": "wide"}})", "width");
+  expect_refused("{" + vol + ", " + tf + R"(, "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "projection": "orthographic"}})",
+                 "ortho_height");
+  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "sphere", "dims": [8, 0, 8]}})", "at least 2");
+  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "sphere", "dims": [100000, 100000, 100000]}})", "exceeds the limit");
+  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "teapot"}})", "unknown builtin");
+  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "../data/bucky_32x32x32_uint8.raw", "dims": [32, 32, 31]}})",
+                 "bytes");
+  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "../data/bucky_32x32x32_uint8.raw", "dims": [32, 32, 32], "type": "complex"}})",
+                 "unknown sample type");
+  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "nowhere.raw", "dims": [2, 2, 2]}})", "cannot open");
+  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "mesh.vtk"}})", "not supported yet");
+  expect_refused("{" + vol + ", " + kCamera + R"(, "transfer_function": {"file": "missing_tf.json"}})", "cannot open");
+}
+
+TEST(MakeIntegrator, RefusesUnknownAndUnimplementedMethods) {
+  const Scene s = parse_scene(R"({"volume": {"builtin": "sphere", "dims": [8, 8, 8]},
+    "transfer_function": {"points": [[0, 1, 1, 1, 0.1]]}, )" + kCamera + "}", ".");
+  MethodSpec m;
+  m.name = "magic";
+  EXPECT_THROW(make_integrator(m, s.volume, s.transfer_function), Error);
+  m.name = "riemann";
+  m.step = 0;
+  EXPECT_THROW(make_integrator(m, s.volume, s.transfer_function), Error);
+  m.name = "exact";
+  EXPECT_EQ(make_integrator(m, s.volume, s.transfer_function)->name(), "exact");
+}
+
+}  // namespace
+}  // namespace vri

@@ -1,0 +1,78 @@
+#pragma once
+// Helpers shared by the tests: volumes from formulas, temporary folders,
+// running the vri program.
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "vri/transfer/transfer_function.hpp"
+#include "vri/volume/grid_volume.hpp"
+
+namespace vri::test {
+
+// A volume whose sample (i,j,k) is f(x,y,z) at its world position.
+template <class F>
+GridVolume volume_from(std::array<int, 3> dims, F&& f, Vec3 spacing = {1, 1, 1}, Vec3 origin = {0, 0, 0}) {
+  std::vector<float> v;
+  v.reserve(std::size_t(dims[0]) * dims[1] * dims[2]);
+  for (int k = 0; k < dims[2]; ++k)
+    for (int j = 0; j < dims[1]; ++j)
+      for (int i = 0; i < dims[0]; ++i)
+        v.push_back(static_cast<float>(
+            f(origin.x + i * spacing.x, origin.y + j * spacing.y, origin.z + k * spacing.z)));
+  return GridVolume(dims, std::move(v), spacing, origin);
+}
+
+// A random piecewise-linear transfer function over [0, s_max]: some runs of
+// zero opacity, some narrow spikes, occasional steps.
+inline TransferFunction random_tf(std::mt19937& rng, double s_max, double tau_max) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<ControlPoint> pts;
+  const int n = 3 + int(u(rng) * 6);
+  std::vector<double> s(n);
+  for (auto& x : s) x = u(rng) * s_max;
+  std::sort(s.begin(), s.end());
+  for (int i = 0; i < n; ++i) {
+    const double tau = u(rng) < 0.3 ? 0.0 : u(rng) * tau_max;
+    pts.push_back({s[i], u(rng), u(rng), u(rng), tau});
+    if (u(rng) < 0.15) pts.push_back({s[i], u(rng), u(rng), u(rng), u(rng) * tau_max});  // a step
+  }
+  return TransferFunction(pts);
+}
+
+// A fresh empty folder under the system temp dir, removed at scope exit.
+struct TempDir {
+  std::filesystem::path path;
+  TempDir() {
+    static int counter = 0;
+    path = std::filesystem::temp_directory_path() /
+           ("vri_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  std::filesystem::path operator/(const std::string& name) const { return path / name; }
+};
+
+inline void write_text(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+inline void write_bytes(const std::filesystem::path& p, const std::vector<unsigned char>& bytes) {
+  std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+}
+
+inline std::string source_path(const std::string& rel) { return std::string(VRI_SOURCE_DIR) + "/" + rel; }
+
+}  // namespace vri::test
