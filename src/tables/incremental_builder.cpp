@@ -16,6 +16,7 @@ namespace vri {
 namespace {
 
 using Entry = std::array<float, 4>;
+using V2 = double __attribute__((vector_size(16)));
 
 Entry to_entry(const SlabRgba& v) {
   return {static_cast<float>(v.r), static_cast<float>(v.g), static_cast<float>(v.b), static_cast<float>(v.a)};
@@ -59,8 +60,13 @@ void build_diagonal(const DiscreteTf& tf, const Pieces& pieces, double length, i
     s.fp[k] = w.fp, s.fq[k] = w.fq, s.bq[k] = w.bq, s.bp[k] = w.bp, s.alpha[k] = w.alpha;
   };
   const double* tau = pieces.tau.data();
-  for (int k = 0; k < count; ++k)
-    set(k, thin_piece_weights(std::min(tau[k] * d, piece_series::kThin), std::min(tau[k + 1] * d, piece_series::kThin)));
+  const auto thin = [d](double t) { return std::min(t * d, piece_series::kThin); };
+  int k = 0;
+  for (; k + 1 < count; k += 2) {  // two pieces per SSE2 register
+    const auto w = thin_piece_weights(V2{thin(tau[k]), thin(tau[k + 1])}, V2{thin(tau[k + 1]), thin(tau[k + 2])});
+    for (int lane = 0; lane < 2; ++lane) set(k + lane, {w.fp[lane], w.fq[lane], w.bq[lane], w.bp[lane], w.alpha[lane]});
+  }
+  if (k < count) set(k, thin_piece_weights(thin(tau[k]), thin(tau[k + 1])));
   for (int k : pieces.by_thickness) {
     if (pieces.thickest(k) * d <= piece_series::kThin) break;
     set(k, thick_piece_weights(tau[k] * d, tau[k + 1] * d));
@@ -77,13 +83,12 @@ void build_diagonal(const DiscreteTf& tf, const Pieces& pieces, double length, i
   }
   for (int start = 0; start < count; start += m) {
     const int end = std::min(start + m, count);
-    for (int k = start + 1; k < end; ++k) {
-      s.head_f[k] = over(s.head_f[k - 1], s.head_f[k]);
-      s.head_b[k] = over(s.head_b[k], s.head_b[k - 1]);
-    }
-    for (int k = end - 2; k >= start; --k) {
-      s.tail_f[k] = over(s.tail_f[k], s.tail_f[k + 1]);
-      s.tail_b[k] = over(s.tail_b[k + 1], s.tail_b[k]);
+    // Four independent chains in one loop, so they overlap in the pipeline.
+    for (int h = start + 1, t = end - 2; h < end; ++h, --t) {
+      s.head_f[h] = over(s.head_f[h - 1], s.head_f[h]);
+      s.head_b[h] = over(s.head_b[h], s.head_b[h - 1]);
+      s.tail_f[t] = over(s.tail_f[t], s.tail_f[t + 1]);
+      s.tail_b[t] = over(s.tail_b[t + 1], s.tail_b[t]);
     }
   }
   // Entry (i, i+m) covers pieces i .. e = i+m-1: a whole bin, or the tail of

@@ -10,9 +10,13 @@
 
 namespace vri {
 
-struct PieceWeights {
-  double fp = 0, fq = 0, bq = 0, bp = 0, alpha = 0;
+// T is double, or a GCC vector of doubles for several pieces at once (the
+// same IEEE operations lane by lane, so the same bits).
+template <class T>
+struct BasicPieceWeights {
+  T fp{}, fq{}, bq{}, bp{}, alpha{};
 };
+using PieceWeights = BasicPieceWeights<double>;
 
 namespace piece_series {
 
@@ -44,9 +48,9 @@ struct Coefficients {
 };
 inline constexpr Coefficients kC;
 
-template <int j>
-inline double poly(double sigma) {  // sum_i c[j][i] sigma^i, Horner
-  double v = 0;
+template <int j, class T>
+inline T poly(T sigma) {  // sum_i c[j][i] sigma^i, Horner
+  T v{};
   for (int i = kP - j; i >= 0; --i) v = v * sigma + kC.c[j][i];
   return v;
 }
@@ -54,18 +58,19 @@ inline double poly(double sigma) {  // sum_i c[j][i] sigma^i, Horner
 }  // namespace piece_series
 
 // Inline so the table builders' inner loops can vectorise it. A, B <= kThin.
-inline PieceWeights thin_piece_weights(double A, double B) {
+template <class T>
+inline BasicPieceWeights<T> thin_piece_weights(T A, T B) {
   using namespace piece_series;
-  const double sigma = 0.5 * (A + B), delta = 0.5 * (B - A), d2 = delta * delta;
-  double j0m1 = 0, j0me = 0;
+  const T sigma = 0.5 * (A + B), delta = 0.5 * (B - A), d2 = delta * delta;
+  T j0m1{}, j0me{};
 #pragma GCC unroll 16
   for (int i = kP0; i >= 1; --i) {
     j0m1 = (j0m1 + kC.j0m1[i]) * sigma;
     j0me = (j0me + kC.j0me[i]) * sigma;
   }
   static_assert(kP == 6);
-  const double even = d2 * (poly<2>(sigma) + d2 * (poly<4>(sigma) + d2 * poly<6>(sigma)));
-  const double odd = delta * (poly<1>(sigma) + d2 * (poly<3>(sigma) + d2 * poly<5>(sigma)));
+  const T even = d2 * (poly<2>(sigma) + d2 * (poly<4>(sigma) + d2 * poly<6>(sigma)));
+  const T odd = delta * (poly<1>(sigma) + d2 * (poly<3>(sigma) + d2 * poly<5>(sigma)));
   return {-(j0m1 + even) - odd, j0me + even + odd, -(j0m1 + even) + odd, j0me + even - odd, j0me - j0m1};
 }
 
