@@ -93,9 +93,9 @@ void build_diagonal(const DiscreteTf& tf, const Pieces& pieces, double length, i
   }
   // Entry (i, i+m) covers pieces i .. e = i+m-1: a whole bin, or the tail of
   // one bin followed by the head of the next.
-  for (int i = 0; i + m < n; ++i) {
+  for (int i = 0, in_bin = 0; i + m < n; ++i, in_bin = in_bin + 1 == m ? 0 : in_bin + 1) {
     const int e = i + m - 1;
-    if (i % m == 0) {
+    if (in_bin == 0) {  // i % m == 0, without a division per entry
       upper[i] = to_entry(s.tail_f[i]);
       lower[i] = to_entry(s.tail_b[i]);
     } else {
