@@ -25,7 +25,7 @@ class DiscreteTf {
  public:
   // Throws vri::Error unless 2 <= n <= kMaxSize.
   DiscreteTf(const TransferFunction& tf, int n);
-  static constexpr int kMaxSize = 1 << 14;
+  static constexpr int kMaxSize = 4096;  // a 4096 x 4096 table is 256 MiB
 
   const ScalarAxis& axis() const { return axis_; }
   int size() const { return axis_.n; }

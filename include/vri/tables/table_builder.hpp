@@ -27,7 +27,7 @@ void check_slab_length(double length);
 // The (M, N, N) table: one build per length max_length * m / (M - 1), the
 // lengths built concurrently. Throws vri::Error unless M >= 2, max_length > 0
 // and the table fits in kMaxLengthTableEntries.
-inline constexpr std::size_t kMaxLengthTableEntries = std::size_t{1} << 28;
+inline constexpr std::size_t kMaxLengthTableEntries = std::size_t{1} << 26;  // 1 GiB of RGBA floats
 LengthTable build_length_table(const TableBuilder& builder, const DiscreteTf& tf, int lengths,
                                double max_length);
 
