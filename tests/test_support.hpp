@@ -32,8 +32,8 @@ GridVolume volume_from(std::array<int, 3> dims, F&& f, Vec3 spacing = {1, 1, 1},
 }
 
 // A random piecewise-linear transfer function over [0, s_max]: some runs of
-// zero opacity, some narrow spikes, occasional steps.
-inline TransferFunction random_tf(std::mt19937& rng, double s_max, double tau_max) {
+// zero opacity, some narrow spikes, occasional steps (unless steps = false).
+inline TransferFunction random_tf(std::mt19937& rng, double s_max, double tau_max, bool steps = true) {
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<ControlPoint> pts;
   const int n = 3 + int(u(rng) * 6);
@@ -43,7 +43,7 @@ inline TransferFunction random_tf(std::mt19937& rng, double s_max, double tau_ma
   for (int i = 0; i < n; ++i) {
     const double tau = u(rng) < 0.3 ? 0.0 : u(rng) * tau_max;
     pts.push_back({s[i], u(rng), u(rng), u(rng), tau});
-    if (u(rng) < 0.15) pts.push_back({s[i], u(rng), u(rng), u(rng), u(rng) * tau_max});  // a step
+    if (steps && u(rng) < 0.15) pts.push_back({s[i], u(rng), u(rng), u(rng), u(rng) * tau_max});  // a step
   }
   return TransferFunction(pts);
 }

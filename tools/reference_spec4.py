@@ -2,7 +2,7 @@
 """Independent reference for SPEC §4, sharing no code with vri.
 
 Re-implements, from SPEC.md alone, the camera (§6), trilinear sampling (§1),
-the transfer function (§3) and the emission-absorption integral (§4) for a
+the transfer function (§3), shading (§5) and the emission-absorption integral (§4) for a
 subset of pixels, and compares them with an image rendered by vri.
 
 The integral is computed along each ray by dense uniform sampling with the
@@ -38,7 +38,34 @@ def load_scene(path):
     if "file" in tf:
         tf = json.load(open(os.path.join(base, tf["file"])))
     pts = np.array(tf["points"], float)
-    return sc, vol, spacing, origin, pts
+    light = sc.get("lighting", {})
+    if light.get("enabled", False):
+        vol_grad = gradients(vol, spacing)
+        light = dict(ka=light.get("ambient", 0.3), kd=light.get("diffuse", 0.7),
+                     ks=light.get("specular", 0.4), p=light.get("shininess", 32),
+                     grad=vol_grad, flat=1e-6 * (vol.max() - vol.min()) / spacing.min())
+    else:
+        light = None
+    return sc, vol, spacing, origin, pts, light
+
+
+def gradients(vol, spacing):
+    """SPEC §5: central differences (one-sided on the border) over the spacing, per grid point."""
+    g = np.empty(vol.shape + (3,))
+    for axis_np, axis_xyz in ((2, 0), (1, 1), (0, 2)):
+        g[..., axis_xyz] = np.gradient(vol, spacing[axis_xyz], axis=axis_np, edge_order=1)
+    return g
+
+
+def lit_colour(light, spacing, origin, p, d, rgb):
+    """c_lit = c (ka + kd |N.d|) + ks |N.d|^p with N the trilinearly interpolated gradient, normalised."""
+    g = np.stack([trilinear(light["grad"][..., a], spacing, origin, p) for a in range(3)], axis=1)
+    n = np.linalg.norm(g, axis=1)
+    x = np.abs(g @ d) / np.where(n > 0, n, 1)
+    flat = ~(n >= light["flat"]) | (n == 0)
+    a = np.where(flat, light["ka"] + light["kd"], light["ka"] + light["kd"] * x)
+    b = np.where(flat, 0.0, light["ks"] * x ** light["p"])
+    return rgb * a[:, None] + b[:, None]
 
 
 def tf_eval(pts, s):
@@ -57,7 +84,7 @@ def tf_eval(pts, s):
 
 
 def trilinear(vol, spacing, origin, p):
-    nz, ny, nx = vol.shape
+    nz, ny, nx = vol.shape[:3]
     u = (p - origin) / spacing
     u = np.clip(u, 0, [nx - 1, ny - 1, nz - 1])
     i = np.minimum(np.floor(u).astype(int), [nx - 2, ny - 2, nz - 2])
@@ -104,15 +131,17 @@ def clip(vol, spacing, origin, o, d):
     return (t0, t1) if t1 > t0 else (None, None)
 
 
-def integrate(vol, spacing, origin, pts, o, d, h):
+def integrate(vol, spacing, origin, pts, light, o, d, h):
     t0, t1 = clip(vol, spacing, origin, o, d)
     if t0 is None:
         return np.zeros(4)
     n = max(2, int(math.ceil((t1 - t0) / h)) + 1)
     t = np.linspace(t0, t1, n)
     dt = t[1] - t[0]
-    s = trilinear(vol, spacing, origin, o + t[:, None] * d)
-    v = tf_eval(pts, s)
+    p = o + t[:, None] * d
+    v = tf_eval(pts, trilinear(vol, spacing, origin, p))
+    if light:
+        v[:, :3] = lit_colour(light, spacing, origin, p, d, v[:, :3])
     tau = v[:, 3]
     depth = np.concatenate([[0.0], np.cumsum(0.5 * (tau[1:] + tau[:-1]) * dt)])
     T = np.exp(-depth)
@@ -121,14 +150,17 @@ def integrate(vol, spacing, origin, pts, o, d, h):
     return np.array([C[0], C[1], C[2], 1 - T[-1]])
 
 
-def riemann(vol, spacing, origin, pts, o, d, h):
+def riemann(vol, spacing, origin, pts, light, o, d, h):
     t0, t1 = clip(vol, spacing, origin, o, d)
     if t0 is None:
         return np.zeros(4)
     n = max(1, int(math.ceil((t1 - t0) / h)))
     t = t0 + h * np.arange(n)
     hk = np.minimum(h, t1 - t)
-    v = tf_eval(pts, trilinear(vol, spacing, origin, o + t[:, None] * d))
+    p = o + t[:, None] * d
+    v = tf_eval(pts, trilinear(vol, spacing, origin, p))
+    if light:
+        v[:, :3] = lit_colour(light, spacing, origin, p, d, v[:, :3])
     a = 1 - np.exp(-v[:, 3] * hk)
     T = np.concatenate([[1.0], np.cumprod(1 - a)])
     C = (v[:, :3] * (T[:-1] * a)[:, None]).sum(axis=0)
@@ -143,7 +175,7 @@ def main():
     ap.add_argument("--riemann", type=float, help="check riemann at this step (voxel units)")
     ap.add_argument("--max-diff", type=float)
     args = ap.parse_args()
-    sc, vol, spacing, origin, pts = load_scene(args.scene)
+    sc, vol, spacing, origin, pts, light = load_scene(args.scene)
     img = np.load(args.image)
     H, W = img.shape[:2]
     cam = dict(sc["camera"]); cam["width"], cam["height"] = W, H
@@ -155,10 +187,10 @@ def main():
     for k in pick:
         o, d = camera_ray(cam, xs[k], ys[k])
         if args.riemann:
-            ref = riemann(vol, spacing, origin, pts, o, d, args.riemann * spacing.min())
+            ref = riemann(vol, spacing, origin, pts, light, o, d, args.riemann * spacing.min())
         else:
-            a = integrate(vol, spacing, origin, pts, o, d, args.step)
-            b = integrate(vol, spacing, origin, pts, o, d, args.step / 2)
+            a = integrate(vol, spacing, origin, pts, light, o, d, args.step)
+            b = integrate(vol, spacing, origin, pts, light, o, d, args.step / 2)
             ref = (4 * b - a) / 3
         diffs.append(img[ys[k], xs[k]].astype(np.float64) - ref)
     diffs = np.abs(np.array(diffs))

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   vri::cli::Runner render = vri::cli::add_render_command(app);
   vri::cli::Runner compare = vri::cli::add_compare_command(app);
   vri::cli::Runner table = vri::cli::add_table_command(app);
+  vri::cli::Runner ray = vri::cli::add_ray_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("compare")) return compare();
     if (app.got_subcommand("table")) return table();
+    if (app.got_subcommand("ray")) return ray();
     return 2;
   } catch (const vri::Error& e) {
     std::cerr << "vri: error: " << e.what() << "\n";

@@ -43,7 +43,7 @@ int run_render(const RenderArgs& args) {
   if (args.height) scene.camera.height = *args.height;
 
   const Camera camera(scene.camera);
-  const auto integrator = make_integrator(scene.method, scene.volume, scene.transfer_function);
+  const auto integrator = make_integrator(scene.method, scene.volume, scene.transfer_function, scene.lighting);
   const auto start = std::chrono::steady_clock::now();
   const Image image = render(camera, *integrator, {.threads = args.threads});
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -52,10 +52,35 @@ double Cubic::solve_monotone(double value, double lo, double hi) const {
 
 Cubic trilinear_along(const GridVolume& vol, const CellSegment& seg) {
   const int i = seg.cell[0], j = seg.cell[1], k = seg.cell[2];
-  const double c000 = vol.at(i, j, k), c100 = vol.at(i + 1, j, k), c010 = vol.at(i, j + 1, k),
-               c110 = vol.at(i + 1, j + 1, k), c001 = vol.at(i, j, k + 1),
-               c101 = vol.at(i + 1, j, k + 1), c011 = vol.at(i, j + 1, k + 1),
-               c111 = vol.at(i + 1, j + 1, k + 1);
+  return trilinear_along({vol.at(i, j, k), vol.at(i + 1, j, k), vol.at(i, j + 1, k), vol.at(i + 1, j + 1, k),
+                          vol.at(i, j, k + 1), vol.at(i + 1, j, k + 1), vol.at(i, j + 1, k + 1),
+                          vol.at(i + 1, j + 1, k + 1)},
+                         seg);
+}
+
+Cubic combine(double a, const Cubic& p, double b, const Cubic& q) {
+  Cubic r;
+  for (int k = 0; k < 4; ++k) r.c[k] = a * p.c[k] + b * q.c[k];
+  return r;
+}
+
+int sign_changes(const Cubic& s, double len, double out[3]) {
+  double knots[4];
+  int nk = 0;
+  knots[nk++] = 0;
+  nk += s.critical_points(len, knots + 1);
+  knots[nk++] = len;
+  int n = 0;
+  for (int m = 0; m + 1 < nk; ++m) {
+    const double fa = s(knots[m]), fb = s(knots[m + 1]);
+    if ((fa < 0 && fb > 0) || (fa > 0 && fb < 0)) out[n++] = s.solve_monotone(0.0, knots[m], knots[m + 1]);
+  }
+  return n;
+}
+
+Cubic trilinear_along(const std::array<double, 8>& v, const CellSegment& seg) {
+  const double c000 = v[0], c100 = v[1], c010 = v[2], c110 = v[3], c001 = v[4], c101 = v[5], c011 = v[6],
+               c111 = v[7];
   // Monomial coefficients of the trilinear interpolant.
   const double a = c000, bx = c100 - c000, by = c010 - c000, bz = c001 - c000;
   const double exy = c110 - c100 - c010 + c000;

@@ -24,9 +24,20 @@ struct Cubic {
   double solve_monotone(double value, double lo, double hi) const;
 };
 
-// s(t) for t in [0, seg.tb - seg.ta] measured from seg.ta: substitute the
-// local coordinates x(t) = x0 + p t (and y, z) into the trilinear form
-// a + b x + c y + d z + e xy + f xz + g yz + h xyz of the cell's 8 samples.
+// A trilinear function along a cell segment, for t in [0, seg.tb - seg.ta]
+// measured from seg.ta: substitute the local coordinates x(t) = x0 + p t (and
+// y, z) into the form a + b x + c y + d z + e xy + f xz + g yz + h xyz of the
+// cell's 8 corner values, given in the order c000, c100, c010, c110, c001,
+// c101, c011, c111 (bit 0 = x, bit 1 = y, bit 2 = z).
+Cubic trilinear_along(const std::array<double, 8>& corners, const CellSegment& seg);
+// The scalar field along the segment.
 Cubic trilinear_along(const GridVolume& vol, const CellSegment& seg);
+
+// a * p + b * q
+Cubic combine(double a, const Cubic& p, double b, const Cubic& q);
+
+// The roots of the cubic strictly inside (0, len) where it changes sign,
+// ascending; returns how many (0..3).
+int sign_changes(const Cubic& s, double len, double out[3]);
 
 }  // namespace vri

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "cubic.hpp"
 #include "gauss_kronrod.hpp"
@@ -10,11 +11,12 @@
 
 namespace vri {
 
-ExactIntegrator::ExactIntegrator(const GridVolume& volume, const TransferFunction& tf,
-                                 double tolerance)
+ExactIntegrator::ExactIntegrator(const GridVolume& volume, const TransferFunction& tf, double tolerance,
+                                 const Lighting& lighting)
     : volume_(volume), tf_(tf), tolerance_(tolerance) {
   if (!(tolerance >= 1e-12 && tolerance <= 0.1))
     throw Error("exact: tolerance must be in [1e-12, 0.1], got " + std::to_string(tolerance));
+  if (lighting.enabled) shader_.emplace(lighting, volume);
   opaque_prefix_.assign(tf.segments().size() + 1, 0);
   for (std::size_t i = 0; i < tf.segments().size(); ++i)
     opaque_prefix_[i + 1] = opaque_prefix_[i] + (tf.segments()[i].transparent() ? 0 : 1);
@@ -25,9 +27,10 @@ Rgba ExactIntegrator::integrate(const Ray& ray) const {
   if (!iv) return {0, 0, 0, 0};
   Accumulator acc;
   const double error_per_length = tolerance_ / iv->length();
-  const double cutoff = 0.1 * tolerance_;
+  // What is left after stopping is at most T * (brightest colour) per channel.
+  const double cutoff = 0.1 * tolerance_ / std::max(1.0, shader_ ? shader_->max_brightness() : 1.0);
   for_each_cell_segment(volume_, ray, *iv, [&](const CellSegment& seg) {
-    integrate_cell(seg, error_per_length, acc);
+    integrate_cell(seg, ray.dir, error_per_length, acc);
     return acc.T > cutoff;
   });
   return {acc.C[0], acc.C[1], acc.C[2], 1 - acc.T};
@@ -52,18 +55,16 @@ struct Piece {
 
 }  // namespace
 
-void ExactIntegrator::integrate_cell(const CellSegment& cs, double error_per_length,
+void ExactIntegrator::integrate_cell(const CellSegment& cs, Vec3 dir, double error_per_length,
                                      Accumulator& acc) const {
   const double len = cs.tb - cs.ta;
   const Cubic s = trilinear_along(volume_, cs);
 
   // Knots: the ends and the critical points, between which s is monotone.
   double knots[4], vals[4];
-  double crit[2];
-  const int nc = s.critical_points(len, crit);
   int nk = 0;
   knots[nk++] = 0;
-  for (int i = 0; i < nc; ++i) knots[nk++] = crit[i];
+  nk += s.critical_points(len, knots + 1);
   knots[nk++] = len;
   double smin = INFINITY, smax = -INFINITY;
   for (int i = 0; i < nk; ++i) {
@@ -75,7 +76,28 @@ void ExactIntegrator::integrate_cell(const CellSegment& cs, double error_per_len
   const int i0 = tf_.segment_index(smin), i1 = tf_.segment_index(smax);
   if (opaque_prefix_[i1 + 1] == opaque_prefix_[i0]) return;
 
+  // Cuts: where s crosses a control point (each monotone run crosses each
+  // control value between its end values once) and, when lit, where N.d = 0.
+  thread_local std::vector<double> cuts;
+  cuts.clear();
   const auto& bp = tf_.breakpoints();
+  for (int m = 0; m + 1 < nk; ++m) {
+    const double ka = knots[m], kb = knots[m + 1], lo = std::min(vals[m], vals[m + 1]),
+                 hi = std::max(vals[m], vals[m + 1]);
+    for (auto it = std::upper_bound(bp.begin(), bp.end(), lo); it != bp.end() && *it < hi; ++it)
+      cuts.push_back(s.solve_monotone(*it, ka, kb));
+  }
+  Cubic grad[3];
+  if (shader_) {
+    for (int a = 0; a < 3; ++a) grad[a] = trilinear_along(shader_->gradients().cell_corners(a, cs.cell), cs);
+    const Cubic nd = combine(1.0, combine(dir.x, grad[0], dir.y, grad[1]), dir.z, grad[2]);
+    double roots[3];
+    const int nr = sign_changes(nd, len, roots);
+    cuts.insert(cuts.end(), roots, roots + nr);
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.push_back(len);
+
   auto integrate_piece = [&](double x, double y) {
     if (!(y > x)) return;
     const TfSegment& seg = tf_.segments()[tf_.segment_index(s(0.5 * (x + y)))];
@@ -85,9 +107,15 @@ void ExactIntegrator::integrate_cell(const CellSegment& cs, double error_per_len
     auto f = [&](double t, double (&out)[3]) {
       const double ds = s(t) - seg.s_ref;
       const double w = pc.tau(t) * std::exp(px - pc.P(t));
-      out[0] = (seg.ref.r + seg.slope.r * ds) * w;
-      out[1] = (seg.ref.g + seg.slope.g * ds) * w;
-      out[2] = (seg.ref.b + seg.slope.b * ds) * w;
+      double a = 1, b = 0;  // unlit: c_lit = c
+      if (shader_) {
+        const auto terms = shader_->terms({grad[0](t), grad[1](t), grad[2](t)}, dir);
+        a = terms.a;
+        b = terms.b;
+      }
+      out[0] = ((seg.ref.r + seg.slope.r * ds) * a + b) * w;
+      out[1] = ((seg.ref.g + seg.slope.g * ds) * a + b) * w;
+      out[2] = ((seg.ref.b + seg.slope.b * ds) * a + b) * w;
     };
     // Adaptive Gauss-Kronrod, iterative, depth first. The error allowed on the
     // unattenuated integral is the piece's share of the budget divided by T.
@@ -117,23 +145,11 @@ void ExactIntegrator::integrate_cell(const CellSegment& cs, double error_per_len
     acc.T = T_in * std::exp(px - pc.P(y));
   };
 
-  // Split each monotone run where s crosses a control point, front to back.
-  for (int m = 0; m + 1 < nk; ++m) {
-    const double ka = knots[m], kb = knots[m + 1], fa = vals[m], fb = vals[m + 1];
-    double prev = ka;
-    auto cut_at = [&](double value) {
-      const double r = std::clamp(s.solve_monotone(value, ka, kb), prev, kb);
-      integrate_piece(prev, r);
-      prev = r;
-    };
-    if (fa < fb) {
-      for (auto it = std::upper_bound(bp.begin(), bp.end(), fa); it != bp.end() && *it < fb; ++it)
-        cut_at(*it);
-    } else if (fa > fb) {
-      for (auto it = std::lower_bound(bp.begin(), bp.end(), fa); it != bp.begin() && *(it - 1) > fb;)
-        cut_at(*--it);
-    }
-    integrate_piece(prev, kb);
+  double prev = 0;
+  for (double cut : cuts) {
+    const double c = std::clamp(cut, prev, len);
+    integrate_piece(prev, c);
+    prev = c;
   }
 }
 

@@ -8,8 +8,9 @@
 namespace vri {
 
 RiemannIntegrator::RiemannIntegrator(const GridVolume& volume, const TransferFunction& tf,
-                                     double step)
+                                     double step, const Lighting& lighting)
     : volume_(volume), tf_(tf) {
+  if (lighting.enabled) shader_.emplace(lighting, volume);
   if (!(step >= 1e-4 && step <= 1e4))
     throw Error("riemann: step must be in [1e-4, 1e4] voxel units, got " + std::to_string(step));
   h_ = step * volume.voxel_unit();
@@ -25,12 +26,14 @@ Rgba RiemannIntegrator::integrate(const Ray& ray) const {
     const double t = iv->t0 + k * h_;
     const double hk = std::min(h_, iv->t1 - t);
     if (!(hk > 0)) break;
-    const TfSample v = tf_(volume_.sample(ray.at(t)));
+    const Vec3 p = ray.at(t);
+    const TfSample v = tf_(volume_.sample(p));
     if (v.tau == 0) continue;
     const double a = -std::expm1(-v.tau * hk);  // 1 - exp(-tau h), accurate for small tau h
-    C[0] += T * v.r * a;
-    C[1] += T * v.g * a;
-    C[2] += T * v.b * a;
+    const auto lit = shader_ ? shader_->at(p, ray.dir) : HeadlightShader::Terms{1, 0};
+    C[0] += T * (v.r * lit.a + lit.b) * a;
+    C[1] += T * (v.g * lit.a + lit.b) * a;
+    C[2] += T * (v.b * lit.a + lit.b) * a;
     T *= 1 - a;
   }
   return {C[0], C[1], C[2], 1 - T};

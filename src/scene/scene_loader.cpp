@@ -243,7 +243,10 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     lighting.specular = l.number(lj, "specular", lighting.specular);
     lighting.shininess = l.number(lj, "shininess", lighting.shininess);
     lighting.mode = l.string(lj, "mode", lighting.mode);
-    if (lighting.enabled) throw Error(source + ": lighting is not implemented yet (set lighting.enabled to false)");
+    if (lighting.mode != "sampled" && lighting.mode != "interpolated")
+      throw Error(l.ctx + ": 'mode' must be sampled or interpolated");
+    for (double v : {lighting.ambient, lighting.diffuse, lighting.specular, lighting.shininess})
+      if (v < 0) throw Error(l.ctx + ": coefficients and shininess must be >= 0");
   }
 
   Vec3 background{0, 0, 0};

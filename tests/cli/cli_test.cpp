@@ -55,6 +55,12 @@ TEST(Cli, RendersComparesAndOverrides) {
   r = run("render " + scene + " -o " + png.string() + " --width 7 --height 5", dir);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(png));
+  const auto csv = dir / "ray.csv", svg = dir / "ray.svg";
+  r = run("ray " + scene + " --pixel 8 6 -o " + csv.string() + " --plot " + svg.string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("xi0"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(csv));
+  EXPECT_TRUE(std::filesystem::exists(svg));
   r = run("compare " + a.string() + " " + a.string(), dir);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("a        0.000000"), std::string::npos) << r.out;
@@ -94,6 +100,9 @@ TEST(Cli, BadInputIsRefusedCleanly) {
       "render " + good,
       "frobnicate",
       "compare " + out + " " + out,
+      "ray " + good + " --pixel 0 0 -o " + (dir / "miss.csv").string(),   // misses the volume
+      "ray " + good + " --pixel 99 0 -o " + (dir / "far.csv").string(),   // outside the image
+      "ray " + good + " --pixel 8 6 -o " + (dir / "r.txt").string(),
   };
   for (const auto& args : cases) {
     const ProcessResult r = run(args, dir);
@@ -101,6 +110,7 @@ TEST(Cli, BadInputIsRefusedCleanly) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
     EXPECT_EQ(r.err.rfind("vri: error: ", 0), 0u) << r.err;
     EXPECT_FALSE(std::filesystem::exists(out)) << args;
+    for (const char* f : {"miss.csv", "far.csv", "r.txt"}) EXPECT_FALSE(std::filesystem::exists(dir / f)) << args;
   }
   // nothing but stdout/stderr captures was left in the folder
   for (const auto& e : std::filesystem::directory_iterator(dir.path))

@@ -69,6 +69,7 @@ TEST(Preint1, BadParametersAreErrors) {
   EXPECT_THROW(Preint1Integrator(scene.volume, scene.transfer_function, 0.0, 256, "incremental"), Error);
   EXPECT_THROW(Preint1Integrator(scene.volume, scene.transfer_function, 1.0, 1, "incremental"), Error);
   EXPECT_THROW(Preint1Integrator(scene.volume, scene.transfer_function, 1.0, 256, "fastest"), Error);
+  EXPECT_THROW(make_integrator({.name = "preint1"}, scene.volume, scene.transfer_function, {.enabled = true}), Error);
 }
 
 }  // namespace

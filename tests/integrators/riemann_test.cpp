@@ -36,18 +36,24 @@ TEST(Riemann, StepsAreInVoxelUnits) {
   EXPECT_NEAR(RiemannIntegrator(vol, tf, 1.0).integrate(ray)[3], 1 - std::exp(-1.75), 1e-12);
 }
 
-TEST(Riemann, ConvergesToExactAtFirstOrder) {
+// Summed absolute error against exact for h = 0.2, 0.1, 0.05, 0.025 on neghip (24 x 24).
+std::vector<double> neghip_errors(const Lighting& lighting) {
   Scene scene = load_scene(test::source_path("scenes/neghip.json"));
   scene.camera.width = scene.camera.height = 24;
   const Camera cam(scene.camera);
-  const Image ref = render(cam, ExactIntegrator(scene.volume, scene.transfer_function, 1e-8));
+  const Image ref = render(cam, ExactIntegrator(scene.volume, scene.transfer_function, 1e-8, lighting));
   std::vector<double> err;
   for (double h : {0.2, 0.1, 0.05, 0.025}) {
-    const Image img = render(cam, RiemannIntegrator(scene.volume, scene.transfer_function, h));
+    const Image img = render(cam, RiemannIntegrator(scene.volume, scene.transfer_function, h, lighting));
     double sum = 0;
     for (std::size_t i = 0; i < img.data().size(); ++i) sum += std::abs(img.data()[i] - ref.data()[i]);
     err.push_back(sum);
   }
+  return err;
+}
+
+TEST(Riemann, ConvergesToExactAtFirstOrder) {
+  const auto err = neghip_errors({});
   for (std::size_t i = 1; i < err.size(); ++i) {
     const double order = std::log2(err[i - 1] / err[i]);
     std::printf("riemann h = %g: summed error %.6g, order %.3f\n", 0.2 / (1 << i), err[i], order);
@@ -56,6 +62,16 @@ TEST(Riemann, ConvergesToExactAtFirstOrder) {
   }
   // measured: 1.113, 1.087, 1.039 - approaching 1 as h shrinks
   EXPECT_NEAR(std::log2(err[2] / err[3]), 1.0, 0.08);
+}
+
+TEST(Riemann, LitConvergesToLitExactAtFirstOrder) {
+  const auto err = neghip_errors(Lighting{true, 0.3, 0.7, 0.4, 32, "sampled"});
+  for (std::size_t i = 1; i < err.size(); ++i) {
+    const double order = std::log2(err[i - 1] / err[i]);
+    std::printf("lit riemann h = %g: summed error %.6g, order %.3f\n", 0.2 / (1 << i), err[i], order);
+    EXPECT_GT(order, 0.85) << i;
+    EXPECT_LT(order, 1.3) << i;
+  }
 }
 
 TEST(Riemann, RejectsBadSteps) {

@@ -9,9 +9,15 @@
 // has a smooth (entire) integrand and is computed by adaptive Gauss-Kronrod
 // (7/15) with an absolute error budget of tolerance * (piece length / ray
 // length), so the whole ray's colour error stays within `tolerance`.
-// The ray stops once the transmittance falls below tolerance/10, which bounds
-// what is dropped (alpha and colour) by tolerance/10.
+// The ray stops once the transmittance falls below tolerance/10 (divided by
+// the brightest lit colour when lighting is on), which bounds what is dropped.
+// With lighting (SPEC §5), c is replaced by c_lit evaluated continuously; the
+// pieces are also split where N.d changes sign (the kink of |N.d|): N.d is the
+// interpolated gradient dotted with d, a cubic inside a cell.
+#include <optional>
+
 #include "vri/integrators/integrator.hpp"
+#include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/cell_traversal.hpp"
 #include "vri/volume/grid_volume.hpp"
@@ -21,7 +27,8 @@ namespace vri {
 class ExactIntegrator final : public Integrator {
  public:
   // tolerance: absolute error bound per channel; throws unless 1e-12 <= tolerance <= 0.1.
-  ExactIntegrator(const GridVolume& volume, const TransferFunction& tf, double tolerance);
+  ExactIntegrator(const GridVolume& volume, const TransferFunction& tf, double tolerance,
+                  const Lighting& lighting = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "exact"; }
 
@@ -29,14 +36,15 @@ class ExactIntegrator final : public Integrator {
     double T = 1;
     double C[3] = {0, 0, 0};
   };
-  // Integrates one cell piece into `acc`; error_per_length is the colour error
-  // allowed per unit of ray length. Public for tests of single cells.
-  void integrate_cell(const CellSegment& seg, double error_per_length, Accumulator& acc) const;
+  // Integrates one cell piece of a ray with direction `dir` into `acc`;
+  // error_per_length is the colour error allowed per unit of ray length.
+  void integrate_cell(const CellSegment& seg, Vec3 dir, double error_per_length, Accumulator& acc) const;
 
  private:
   const GridVolume& volume_;
   const TransferFunction& tf_;
   double tolerance_;
+  std::optional<HeadlightShader> shader_;
   std::vector<int> opaque_prefix_;  // opaque_prefix_[i]: non-transparent segments before i
 };
 

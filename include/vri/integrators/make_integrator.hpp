@@ -6,6 +6,7 @@
 
 #include "vri/integrators/integrator.hpp"
 #include "vri/integrators/method_spec.hpp"
+#include "vri/shading/lighting.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -17,6 +18,6 @@ const std::vector<std::string>& known_method_names();
 // Throws vri::Error for an unknown method, one not yet implemented, or bad
 // parameters. The integrator refers to `volume` and `tf`: keep them alive.
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
-                                            const TransferFunction& tf);
+                                            const TransferFunction& tf, const Lighting& lighting = {});
 
 }  // namespace vri

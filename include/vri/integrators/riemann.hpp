@@ -5,7 +5,11 @@
 // colour and extinction, composited front to back:
 //   alpha_k = 1 - exp(-tau(s_k) h_k),  C += T c(s_k) alpha_k,  T *= 1 - alpha_k.
 // A left Riemann sum of the optical depth: first-order accurate in h.
+// With lighting, c(s_k) is replaced by c_lit at the sample (SPEC §5).
+#include <optional>
+
 #include "vri/integrators/integrator.hpp"
+#include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -14,7 +18,8 @@ namespace vri {
 class RiemannIntegrator final : public Integrator {
  public:
   // step in voxel units; throws vri::Error unless 1e-4 <= step <= 1e4.
-  RiemannIntegrator(const GridVolume& volume, const TransferFunction& tf, double step);
+  RiemannIntegrator(const GridVolume& volume, const TransferFunction& tf, double step,
+                    const Lighting& lighting = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "riemann"; }
 
@@ -22,6 +27,7 @@ class RiemannIntegrator final : public Integrator {
   const GridVolume& volume_;
   const TransferFunction& tf_;
   double h_;  // world units
+  std::optional<HeadlightShader> shader_;
 };
 
 }  // namespace vri

@@ -6,16 +6,11 @@
 
 #include "vri/camera/camera.hpp"
 #include "vri/integrators/method_spec.hpp"
+#include "vri/shading/lighting.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri {
-
-struct Lighting {
-  bool enabled = false;
-  double ambient = 0.3, diffuse = 0.7, specular = 0.4, shininess = 32;  // SPEC §5 defaults
-  std::string mode = "sampled";
-};
 
 struct Scene {
   GridVolume volume;

@@ -1,0 +1,30 @@
+#pragma once
+// GradientField (SPEC §5): the gradient at each grid point by central
+// differences (one-sided on the border) divided by the spacing, and between
+// grid points the trilinear interpolation of those vectors.
+#include <array>
+#include <vector>
+
+#include "vri/core/vec3.hpp"
+#include "vri/volume/grid_volume.hpp"
+
+namespace vri {
+
+class GradientField {
+ public:
+  explicit GradientField(const GridVolume& volume);
+
+  // Gradient at grid point (i, j, k), world units.
+  Vec3 at(int i, int j, int k) const;
+  // Trilinearly interpolated gradient at a world point (clamped onto the box).
+  Vec3 sample(Vec3 p) const;
+  // The 8 corner values of component `axis` of cell (i, j, k), in the order
+  // c000, c100, c010, c110, c001, c101, c011, c111.
+  std::array<double, 8> cell_corners(int axis, std::array<int, 3> cell) const;
+
+ private:
+  const GridVolume& volume_;
+  std::vector<float> g_;  // 3 floats per grid point, x fastest
+};
+
+}  // namespace vri

@@ -1,0 +1,25 @@
+#include "vri/shading/headlight_shader.hpp"
+
+#include <cmath>
+
+#include "vri/core/error.hpp"
+
+namespace vri {
+
+HeadlightShader::HeadlightShader(const Lighting& l, const GridVolume& volume)
+    : ka_(l.ambient), kd_(l.diffuse), ks_(l.specular), p_(l.shininess),
+      flat_(1e-6 * (double(volume.max_value()) - volume.min_value()) / volume.voxel_unit()),
+      gradients_(volume) {
+  for (double v : {ka_, kd_, ks_, p_})
+    if (!(v >= 0) || !std::isfinite(v))
+      throw Error("lighting coefficients and shininess must be finite and >= 0");
+}
+
+HeadlightShader::Terms HeadlightShader::terms(Vec3 g, Vec3 dir) const {
+  const double len = length(g);
+  if (!(len >= flat_) || len == 0) return {ka_ + kd_, 0.0};
+  const double x = std::abs(dot(g, dir)) / len;
+  return {ka_ + kd_ * x, ks_ * std::pow(x, p_)};
+}
+
+}  // namespace vri

@@ -1,0 +1,57 @@
+#include "vri/volume/gradient_field.hpp"
+
+#include <algorithm>
+
+namespace vri {
+
+GradientField::GradientField(const GridVolume& volume) : volume_(volume), g_(volume.values().size() * 3) {
+  const auto& n = volume.dims();
+  const Vec3 sp = volume.spacing();
+  std::size_t idx = 0;
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i, ++idx) {
+        const int c[3] = {i, j, k};
+        for (int a = 0; a < 3; ++a) {
+          int lo[3] = {i, j, k}, hi[3] = {i, j, k};
+          lo[a] = std::max(c[a] - 1, 0);
+          hi[a] = std::min(c[a] + 1, n[a] - 1);
+          const double dv = volume.at(hi[0], hi[1], hi[2]) - volume.at(lo[0], lo[1], lo[2]);
+          g_[3 * idx + a] = static_cast<float>(dv / ((hi[a] - lo[a]) * sp[a]));
+        }
+      }
+}
+
+Vec3 GradientField::at(int i, int j, int k) const {
+  const float* p = g_.data() + 3 * volume_.index(i, j, k);
+  return {p[0], p[1], p[2]};
+}
+
+std::array<double, 8> GradientField::cell_corners(int axis, std::array<int, 3> c) const {
+  std::array<double, 8> out;
+  for (int corner = 0; corner < 8; ++corner)
+    out[corner] = g_[3 * volume_.index(c[0] + (corner & 1), c[1] + ((corner >> 1) & 1), c[2] + (corner >> 2)) + axis];
+  return out;
+}
+
+Vec3 GradientField::sample(Vec3 p) const {
+  const auto& n = volume_.dims();
+  std::array<int, 3> c;
+  double f[3];
+  for (int a = 0; a < 3; ++a) {
+    const double u = std::clamp((p[a] - volume_.origin()[a]) / volume_.spacing()[a], 0.0, double(n[a] - 1));
+    c[a] = std::min(static_cast<int>(u), n[a] - 2);
+    f[a] = u - c[a];
+  }
+  Vec3 out;
+  for (int a = 0; a < 3; ++a) {
+    const auto v = cell_corners(a, c);
+    const double x00 = v[0] + f[0] * (v[1] - v[0]), x10 = v[2] + f[0] * (v[3] - v[2]);
+    const double x01 = v[4] + f[0] * (v[5] - v[4]), x11 = v[6] + f[0] * (v[7] - v[6]);
+    const double y0 = x00 + f[1] * (x10 - x00), y1 = x01 + f[1] * (x11 - x01);
+    out[a] = y0 + f[2] * (y1 - y0);
+  }
+  return out;
+}
+
+}  // namespace vri
