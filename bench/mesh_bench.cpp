@@ -68,14 +68,18 @@ void BM_PtCylindrical(benchmark::State& state) {
 }
 BENCHMARK(BM_PtCylindrical)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// args: table size N, lengths M (brute force: M N^2 exact segment integrals on 2 threads).
-void BM_BruteSlabTable(benchmark::State& state) {
+// args: table size N, lengths M, builder (0 incremental: O(M N^2); 1 brute: O(M N^3)), on 2 threads.
+void BM_SlabTable(benchmark::State& state) {
   vri::MethodSpec spec = fin().method;
   spec.table_size = int(state.range(0));
   spec.length_samples = int(state.range(1));
+  spec.builder = state.range(2) ? "brute" : "incremental";
+  state.SetLabel(spec.builder);
   for (auto _ : state) benchmark::DoNotOptimize(vri::make_slab_table(spec, fin().mesh(), fin().transfer_function));
 }
-BENCHMARK(BM_BruteSlabTable)->Args({64, 32})->Args({128, 64})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SlabTable)
+    ->Args({64, 32, 1})->Args({64, 32, 0})->Args({128, 64, 0})->Args({256, 64, 0})
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_CylindricalResample(benchmark::State& state) {
   for (auto _ : state)

@@ -11,6 +11,7 @@ using Runner = std::function<int()>;
 
 Runner add_render_command(CLI::App& app);
 Runner add_compare_command(CLI::App& app);
+Runner add_table_command(CLI::App& app);
 Runner add_ray_command(CLI::App& app);
 
 }  // namespace vri::cli

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   vri::cli::Runner render = vri::cli::add_render_command(app);
   vri::cli::Runner compare = vri::cli::add_compare_command(app);
+  vri::cli::Runner table = vri::cli::add_table_command(app);
   vri::cli::Runner ray = vri::cli::add_ray_command(app);
   try {
     app.parse(argc, argv);
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("compare")) return compare();
+    if (app.got_subcommand("table")) return table();
     if (app.got_subcommand("ray")) return ray();
     return 2;
   } catch (const vri::Error& e) {

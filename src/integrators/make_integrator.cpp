@@ -7,8 +7,9 @@
 #include "vri/integrators/adaptive_simpson.hpp"
 #include "vri/integrators/exact.hpp"
 #include "vri/integrators/mesh_exact.hpp"
+#include "vri/integrators/preint1.hpp"
 #include "vri/integrators/tet_raycast.hpp"
-#include "vri/tables/brute_slab_table.hpp"
+#include "vri/tables/table_builder.hpp"
 #include "vri/integrators/riemann.hpp"
 
 namespace vri {
@@ -52,6 +53,10 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
     return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p);
   }
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
+  if (spec.name == "preint1") {
+    if (lighting.enabled) throw Error("preint1: lighting is not supported yet; disable it or use riemann/exact");
+    return std::make_unique<Preint1Integrator>(volume, tf, spec.step, spec.table_size, spec.builder);
+  }
   if (is_mesh_method(spec.name))
     throw Error("method '" + spec.name + "' needs a tetrahedral mesh (volume {\"file\": \"x.vtk\"} or " +
                 "{\"builtin\": \"tetrahedralized\", ...})");
@@ -71,7 +76,9 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMes
 }
 
 std::unique_ptr<SlabTable> make_slab_table(const MethodSpec& spec, const TetMesh& mesh, const TransferFunction& tf) {
-  return std::make_unique<BruteSlabTable>(tf, spec.table_size, spec.length_samples, mesh.max_edge_length());
+  const DiscreteTf discrete(tf, spec.table_size);
+  return std::make_unique<LengthTable>(
+      build_length_table(*make_table_builder(spec.builder), discrete, spec.length_samples, mesh.max_edge_length()));
 }
 
 }  // namespace vri

@@ -262,6 +262,7 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     method.hmin = m.number(mj, "hmin", method.hmin);
     method.hmax = m.number(mj, "hmax", method.hmax);
     method.strategy = m.string(mj, "strategy", method.strategy);
+    method.builder = m.string(mj, "builder", method.builder);
   }
 
   Lighting lighting;

@@ -9,7 +9,7 @@
 #include "vri/core/error.hpp"
 #include "vri/integrators/mesh_exact.hpp"
 #include "vri/io/vtk_legacy.hpp"
-#include "vri/tables/brute_slab_table.hpp"
+#include "tables/length_table_support.hpp"
 
 namespace vri {
 namespace {
@@ -20,7 +20,7 @@ double wave(double x, double y, double z) { return 0.5 + 0.4 * std::sin(0.9 * x 
 double max_error(const TetMesh& mesh, const TransferFunction& tf, int size, int lengths, CameraSpec cs) {
   const MeshExactIntegrator exact(mesh, tf, 1e-8);
   const TetRaycastIntegrator raycast(
-      mesh, std::make_unique<BruteSlabTable>(tf, size, lengths, mesh.max_edge_length()));
+      mesh, test::length_table_ptr(tf, size, lengths, mesh.max_edge_length()));
   cs.width = cs.height = 32;
   const Camera cam(cs);
   double err = 0, alpha = 0;
@@ -65,7 +65,7 @@ TEST(TetRaycast, MatchesExactOnTheBundledMesh) {
 
 TEST(TetRaycast, RefusesATableTooShortForTheMesh) {
   const TetMesh mesh = test::unit_tet();
-  EXPECT_THROW(TetRaycastIntegrator(mesh, std::make_unique<BruteSlabTable>(tf(), 8, 4, 1.0)), Error);
+  EXPECT_THROW(TetRaycastIntegrator(mesh, test::length_table_ptr(tf(), 8, 4, 1.0)), Error);
 }
 
 }  // namespace

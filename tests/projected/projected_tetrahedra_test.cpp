@@ -10,7 +10,7 @@
 #include "vri/integrators/mesh_exact.hpp"
 #include "vri/integrators/tet_raycast.hpp"
 #include "vri/io/vtk_legacy.hpp"
-#include "vri/tables/brute_slab_table.hpp"
+#include "tables/length_table_support.hpp"
 
 namespace vri {
 namespace {
@@ -31,7 +31,7 @@ struct Errors {
 Errors compare(const TetMesh& mesh, const TransferFunction& t, CameraSpec cs) {
   cs.width = cs.height = 40;
   const Camera cam(cs);
-  auto table = std::make_unique<BruteSlabTable>(t, 64, 16, mesh.max_edge_length());
+  auto table = test::length_table_ptr(t, 64, 16, mesh.max_edge_length());
   const Image pt = render_projected(cam, mesh, *table, {.threads = 2});
   const TetRaycastIntegrator raycast(mesh, std::move(table));
   const MeshExactIntegrator exact(mesh, t, 1e-8);
@@ -96,7 +96,7 @@ TEST(ProjectedTetrahedra, NearerSlabCoversTheFartherOne) {
   const TetMesh mesh = test::carved_mesh(5, [](double x, double, double) { return x < 2 ? 0.0 : 1.0; },
                                          [](double x, double, double) { return x < 1 || x > 3; });
   const TransferFunction t({{0, 1, 0, 0, 8}, {0.01, 0, 0, 0, 0}, {0.99, 0, 0, 0, 0}, {1, 0, 0, 1, 8}});
-  const BruteSlabTable table(t, 32, 8, mesh.max_edge_length());
+  const LengthTable table = test::length_table(t, 32, 8, mesh.max_edge_length());
   for (double side : {-1.0, 1.0}) {
     CameraSpec cs = view({2 + 10 * side, 2.1, 2.2}, {2, 2.1, 2.2}, true);
     cs.ortho_height = 2;
@@ -112,7 +112,7 @@ TEST(ProjectedTetrahedra, NearerSlabCoversTheFartherOne) {
 
 TEST(ProjectedTetrahedra, SameBytesWithAnyThreadCountAndTileSize) {
   const TetMesh mesh = test::carved_mesh(6, wave, [](double x, double y, double) { return x < 2 || y > 3; });
-  const BruteSlabTable table(tf(), 32, 8, mesh.max_edge_length());
+  const LengthTable table = test::length_table(tf(), 32, 8, mesh.max_edge_length());
   CameraSpec cs = view({-6, -5, 9}, {2.5, 2.5, 2.5}, false);
   cs.width = 37;
   cs.height = 29;
@@ -128,7 +128,7 @@ TEST(ProjectedTetrahedra, SameBytesWithAnyThreadCountAndTileSize) {
 // and closer with finer planes.
 TEST(ProjectedTetrahedra, CylindricalPlanesApproachPt) {
   const TetMesh mesh = test::carved_mesh(6, wave, [](double x, double, double z) { return !(x > 2 && x < 3 && z > 1); });
-  const BruteSlabTable table(tf(), 32, 16, mesh.max_edge_length());
+  const LengthTable table = test::length_table(tf(), 32, 16, mesh.max_edge_length());
   CameraSpec cs = view({13, -8, 10}, {2.5, 2.5, 2.5}, true);
   cs.width = cs.height = 32;
   const Camera cam(cs);
@@ -146,7 +146,7 @@ TEST(ProjectedTetrahedra, CylindricalPlanesApproachPt) {
 
 TEST(ProjectedTetrahedra, RefusesATableTooShortForTheMesh) {
   const TetMesh mesh = test::unit_tet();
-  const BruteSlabTable table(tf(), 8, 4, 1.0);
+  const LengthTable table = test::length_table(tf(), 8, 4, 1.0);
   CameraSpec cs = view({3, 3, 3}, {0, 0, 0}, false);
   EXPECT_THROW(render_projected(Camera(cs), mesh, table), Error);
 }

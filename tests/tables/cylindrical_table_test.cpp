@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "vri/core/error.hpp"
-#include "vri/tables/brute_slab_table.hpp"
+#include "tables/length_table_support.hpp"
 
 namespace vri {
 namespace {
@@ -17,7 +17,7 @@ const TransferFunction& tf() {
 
 // Equation 10 inverts equation 9: a point built on plane alpha maps back to alpha.
 TEST(CylindricalTable, AlphaInvertsThePlaneMapping) {
-  const BruteSlabTable slab(tf(), 8, 4, 2.0);
+  const LengthTable slab = test::length_table(tf(), 8, 4, 2.0);
   const CylindricalTable cyl(slab, tf(), 8, 9);
   for (double a : {0.0, 0.1, 0.25, 0.3, 0.5, 0.6, 0.75, 0.9, 1.0}) {
     const double s = 0.4, t = 0.3;  // normalised plane coordinates
@@ -34,7 +34,7 @@ TEST(CylindricalTable, AlphaInvertsThePlaneMapping) {
 
 // On a plane's own grid nodes the planes hold the slab table's values.
 TEST(CylindricalTable, PlaneNodesHoldTheSlabTable) {
-  const BruteSlabTable slab(tf(), 9, 5, 2.0);
+  const LengthTable slab = test::length_table(tf(), 9, 5, 2.0);
   const CylindricalTable cyl(slab, tf(), 9, 5);  // planes at alpha = 0, .25, .5, .75, 1
   // Plane alpha = .5 (90 degrees: s_f = s_b = t, l = s): node s = 0.5, t = 0.25.
   const Rgba a = cyl.lookup(0.5, 1.0, 1.0, 1.0), b = slab.lookup(1.0, 1.0, 1.0);
@@ -47,7 +47,7 @@ TEST(CylindricalTable, PlaneNodesHoldTheSlabTable) {
 
 // Between nodes the resampling costs accuracy; more planes and finer tiles recover it.
 TEST(CylindricalTable, ConvergesToTheSlabTable) {
-  const BruteSlabTable slab(tf(), 16, 8, 2.0);
+  const LengthTable slab = test::length_table(tf(), 16, 8, 2.0);
   auto max_error = [&](int size, int planes) {
     const CylindricalTable cyl(slab, tf(), size, planes);
     double err = 0;
@@ -65,7 +65,7 @@ TEST(CylindricalTable, ConvergesToTheSlabTable) {
 }
 
 TEST(CylindricalTable, RefusesBadSizes) {
-  const BruteSlabTable slab(tf(), 8, 4, 2.0);
+  const LengthTable slab = test::length_table(tf(), 8, 4, 2.0);
   EXPECT_THROW(CylindricalTable(slab, tf(), 1, 4), Error);
   EXPECT_THROW(CylindricalTable(slab, tf(), 8, 1), Error);
   EXPECT_THROW(CylindricalTable(slab, tf(), 4096, 4096), Error);

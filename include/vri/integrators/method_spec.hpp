@@ -16,6 +16,7 @@ struct MethodSpec {
   // coupled, decoupled or guaranteed
   double h0 = 0.5, hmin = 0.1, hmax = 2.0;
   std::string strategy = "coupled";
+  std::string builder = "incremental";  // preint*: pre-integration table builder
 };
 
 }  // namespace vri

@@ -1,4 +1,4 @@
-#include "vri/tables/brute_slab_table.hpp"
+#include "tables/length_table_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 namespace vri {
 namespace {
 
-TEST(BruteSlabTable, NodesHoldTheExactSegmentIntegral) {
+TEST(LengthTable, NodesHoldTheExactSegmentIntegral) {
   const TransferFunction tf({{0, 1, 0, 0, 0}, {1, 0, 1, 0, 2}, {2, 0, 0, 1, 0.5}});
-  const BruteSlabTable table(tf, 9, 5, 2.0);
+  const LengthTable table = test::length_table(tf, 9, 5, 2.0);
   const PieceIntegrator exact(tf);
   // Node (m, i, j) = (3, 2, 7): l = 1.5, s_f = 0.5, s_b = 1.75.
   PieceIntegrator::Accumulator acc;
@@ -25,21 +25,21 @@ TEST(BruteSlabTable, NodesHoldTheExactSegmentIntegral) {
   EXPECT_EQ(zero[3], 0);
 }
 
-TEST(BruteSlabTable, InterpolatesAndClamps) {
+TEST(LengthTable, InterpolatesAndClamps) {
   // Constant tau: alpha(l) = 1 - exp(-tau l), sampled at l = 0, 1, 2, 3.
   const TransferFunction tf({{0, 0.5, 0.5, 0.5, 0.3}, {1, 0.5, 0.5, 0.5, 0.3}});
-  const BruteSlabTable table(tf, 4, 4, 3.0);
+  const LengthTable table = test::length_table(tf, 4, 4, 3.0);
   const double a1 = 1 - std::exp(-0.3), a2 = 1 - std::exp(-0.6);
   EXPECT_NEAR(table.lookup(1.5, 0.2, 0.9)[3], 0.5 * (a1 + a2), 1e-6);  // linear in l between nodes
   EXPECT_NEAR(table.lookup(1.0, -5, 7)[3], a1, 1e-6);                 // scalars clamped to [0, 1]
   EXPECT_NEAR(table.lookup(1.0, -5, 7)[0], 0.5 * a1, 1e-6);
 }
 
-TEST(BruteSlabTable, RefusesBadSizes) {
+TEST(LengthTable, RefusesBadSizes) {
   const TransferFunction tf({{0, 1, 1, 1, 1}});
-  EXPECT_THROW(BruteSlabTable(tf, 1, 4, 1), Error);
-  EXPECT_THROW(BruteSlabTable(tf, 4, 1, 1), Error);
-  EXPECT_THROW(BruteSlabTable(tf, 4, 4, 0), Error);
+  EXPECT_THROW(test::length_table(tf, 1, 4, 1), Error);
+  EXPECT_THROW(test::length_table(tf, 4, 1, 1), Error);
+  EXPECT_THROW(test::length_table(tf, 4, 4, 0), Error);
 }
 
 }  // namespace

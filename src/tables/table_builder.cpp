@@ -1,0 +1,57 @@
+#include "vri/tables/table_builder.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "vri/core/error.hpp"
+#include "vri/tables/brute_builder.hpp"
+#include "vri/tables/engel_builder.hpp"
+#include "vri/tables/incremental_builder.hpp"
+#include "vri/tables/sliced_builder.hpp"
+
+namespace vri {
+
+LengthTable build_length_table(const TableBuilder& builder, const DiscreteTf& tf, int lengths,
+                               double max_length) {
+  if (lengths < 2) throw Error("--lengths must be >= 2, got " + std::to_string(lengths));
+  if (!(max_length > 0) || !std::isfinite(max_length))
+    throw Error("--max-length must be a positive number, got " + std::to_string(max_length));
+  const std::size_t n = tf.size();
+  if (static_cast<std::size_t>(lengths) * n * n > kMaxLengthTableEntries)
+    throw Error("a table of " + std::to_string(lengths) + " x " + std::to_string(n) + " x " +
+                std::to_string(n) + " entries is too large");
+  std::vector<std::optional<PreintegrationTable>> built(lengths);
+  tbb::parallel_for(0, lengths, [&](int m) {
+    const double l = max_length * m / (lengths - 1);
+    // Length 0 is the empty slab; builders take only positive lengths.
+    built[m] = m == 0 ? PreintegrationTable(tf.axis(), 0) : builder.build(tf, l);
+  });
+  std::vector<PreintegrationTable> slices;
+  for (auto& t : built) slices.push_back(std::move(*t));
+  return LengthTable(std::move(slices), max_length);
+}
+
+const std::vector<std::string>& known_builder_names() {
+  static const std::vector<std::string> names = {"brute", "incremental", "sliced", "engel"};
+  return names;
+}
+
+std::unique_ptr<TableBuilder> make_table_builder(const std::string& name) {
+  if (name == "brute") return std::make_unique<BruteBuilder>();
+  if (name == "incremental") return std::make_unique<IncrementalBuilder>();
+  if (name == "sliced") return std::make_unique<SlicedBuilder>();
+  if (name == "engel") return std::make_unique<EngelBuilder>();
+  std::string list;
+  for (const auto& n : known_builder_names()) list += (list.empty() ? "" : ", ") + n;
+  throw Error("unknown table builder '" + name + "' (known: " + list + ")");
+}
+
+void check_slab_length(double length) {
+  if (!(length > 0) || !std::isfinite(length))
+    throw Error("slab length must be a positive number, got " + std::to_string(length));
+}
+
+}  // namespace vri

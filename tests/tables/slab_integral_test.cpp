@@ -1,0 +1,92 @@
+#include "vri/tables/slab_integral.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "vri/tables/brute_builder.hpp"
+
+namespace vri {
+namespace {
+
+TEST(HomogeneousSlab, ClosedForm) {
+  const SlabRgba v = homogeneous_slab({0.2, 0.5, 1.0, 0.7}, 3.0);
+  const double a = 1 - std::exp(-2.1);
+  EXPECT_NEAR(v.a, a, 1e-15);
+  EXPECT_NEAR(v.r, 0.2 * a, 1e-15);
+  EXPECT_NEAR(v.b, a, 1e-15);
+}
+
+TEST(LinearPiece, EqualEndsIsTheHomogeneousSlab) {
+  const TfSample v{0.3, 0.6, 0.9, 2.5};
+  const PiecePair p = linear_piece(v, v, 0.8);
+  const SlabRgba h = homogeneous_slab(v, 0.8);
+  for (const SlabRgba& s : {p.forward, p.backward}) {
+    EXPECT_NEAR(s.r, h.r, 1e-12);
+    EXPECT_NEAR(s.g, h.g, 1e-12);
+    EXPECT_NEAR(s.a, h.a, 1e-15);
+  }
+}
+
+// tau rising from 0: J = int_0^1 exp(-k x^2) dx = sqrt(pi/k)/2 erf(sqrt k), k = B/2,
+// and C = c_p (1 - J) + c_q (J - E) by parts (docs/PREINTEGRATION.md).
+TEST(LinearPiece, RampFromZeroMatchesErfClosedForm) {
+  for (double B : {0.01, 0.7, 3.0, 40.0, 900.0}) {
+    const TfSample p{1, 0, 0, 0}, q{0, 1, 0, B};
+    const double k = B / 2, E = std::exp(-k);
+    const double J = 0.5 * std::sqrt(std::numbers::pi / k) * std::erf(std::sqrt(k));
+    const PiecePair pp = linear_piece(p, q, 1.0);
+    EXPECT_NEAR(pp.forward.r, 1 - J, 1e-12) << B;
+    EXPECT_NEAR(pp.forward.g, J - E, 1e-12) << B;
+    EXPECT_NEAR(pp.forward.a, 1 - E, 1e-15) << B;
+    // Backward the same piece starts opaque-side first: swap the roles.
+    const PiecePair rev = linear_piece(q, p, 1.0);
+    EXPECT_NEAR(rev.backward.r, pp.forward.r, 1e-12) << B;
+    EXPECT_NEAR(rev.backward.g, pp.forward.g, 1e-12) << B;
+  }
+}
+
+TEST(LinearPiece, AgreesWithDirectQuadratureInBothDirections) {
+  const double taus[] = {0, 1e-6, 0.05, 0.41, 0.42, 0.9, 1.7, 12, 250, 5000};  // d = 0.6: thin below 0.25/0.6
+  for (double tp : taus)
+    for (double tq : taus) {
+      const TfSample p{0.9, 0.1, 0.4, tp}, q{0.2, 0.8, 0.5, tq};
+      const PiecePair pp = linear_piece(p, q, 0.6);
+      const SlabRgba f = quadrature_piece(p, q, 0.6), b = quadrature_piece(q, p, 0.6);
+      EXPECT_NEAR(pp.forward.r, f.r, 1e-10) << tp << " " << tq;
+      EXPECT_NEAR(pp.forward.g, f.g, 1e-10) << tp << " " << tq;
+      EXPECT_NEAR(pp.backward.r, b.r, 1e-10) << tp << " " << tq;
+      EXPECT_NEAR(pp.backward.b, b.b, 1e-10) << tp << " " << tq;
+      EXPECT_EQ(pp.forward.a, pp.backward.a);
+      EXPECT_NEAR(pp.forward.a, f.a, 1e-14);
+    }
+}
+
+TransferFunction ramp_tf() {
+  return TransferFunction({{0, 1, 0, 0, 0.0}, {4, 0, 1, 0, 2.0}, {8, 0, 0, 1, 0.5}});
+}
+
+// A slab cut at a point where the scalar is s_m is the front half over the back half.
+TEST(ExactSlab, SplitsAtAnInteriorPoint) {
+  const DiscreteTf tf(ramp_tf(), 9);
+  const SlabRgba whole = exact_slab(tf, 1.3, 7.1, 2.0);
+  const double s_m = 1.3 + (7.1 - 1.3) * 0.3;
+  const SlabRgba parts = over(exact_slab(tf, 1.3, s_m, 0.6), exact_slab(tf, s_m, 7.1, 1.4));
+  EXPECT_NEAR(whole.r, parts.r, 1e-13);
+  EXPECT_NEAR(whole.g, parts.g, 1e-13);
+  EXPECT_NEAR(whole.b, parts.b, 1e-13);
+  EXPECT_NEAR(whole.a, parts.a, 1e-13);
+  EXPECT_GT(whole.g, 0.1);
+}
+
+TEST(ExactSlab, EqualScalarsAreHomogeneousAtTheInterpolatedValue) {
+  const DiscreteTf tf(ramp_tf(), 9);
+  const SlabRgba v = exact_slab(tf, 2.5, 2.5, 0.7);
+  const double tau = 0.625 * 2.0, a = 1 - std::exp(-tau * 0.7);
+  EXPECT_NEAR(v.a, a, 1e-14);
+  EXPECT_NEAR(v.r, 0.375 * a, 1e-14);
+}
+
+}  // namespace
+}  // namespace vri

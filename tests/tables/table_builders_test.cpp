@@ -1,0 +1,140 @@
+// Every builder against `brute`, the reference (tables/brute_builder.hpp).
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "tables/random_tf.hpp"
+#include "vri/core/error.hpp"
+#include "vri/tables/brute_builder.hpp"
+#include "vri/tables/slab_integral.hpp"
+#include "vri/tables/table_builder.hpp"
+
+namespace vri {
+namespace {
+
+double max_difference(const PreintegrationTable& a, const PreintegrationTable& b, int channel_lo = 0,
+                      int channel_hi = 4) {
+  double m = 0;
+  for (std::size_t k = 0; k < a.data().size(); ++k)
+    if (int(k % 4) >= channel_lo && int(k % 4) < channel_hi) {
+      m = std::max(m, double(std::abs(a.data()[k] - b.data()[k])));
+    }
+  return m;
+}
+
+struct Case {
+  unsigned seed;
+  int n;
+  double length, max_tau;
+};
+
+TEST(IncrementalBuilder, EqualsBruteInEveryEntry) {
+  const auto incremental = make_table_builder("incremental");
+  for (const Case c : {Case{1, 64, 1.0, 0.5}, Case{2, 97, 0.5, 4.0}, Case{3, 80, 3.0, 20.0},
+                       Case{4, 33, 1.0, 300.0}, Case{5, 128, 1.0, 1.0}}) {
+    const DiscreteTf tf(test::random_spiky_tf(c.seed, c.max_tau), c.n);
+    const PreintegrationTable ref = BruteBuilder().build(tf, c.length);
+    const PreintegrationTable fast = incremental->build(tf, c.length);
+    EXPECT_LE(max_difference(ref, fast), 1e-5) << "seed " << c.seed;
+    // The tables are not trivially zero: some entries are far from transparent.
+    EXPECT_GT(*std::max_element(ref.data().begin(), ref.data().end()), 0.2f) << "seed " << c.seed;
+  }
+}
+
+// Mirroring the transfer function (s -> 255 - s) swaps front and back.
+TEST(TableBuilders, MirroredTransferFunctionTransposesTheTable) {
+  const TransferFunction tf = test::random_spiky_tf(7, 10.0);
+  std::vector<ControlPoint> mirrored(tf.points().rbegin(), tf.points().rend());
+  for (auto& p : mirrored) p.s = 255 - p.s;
+  const int n = 52;
+  const DiscreteTf a(tf, n), b(TransferFunction(mirrored), n);
+  for (const char* name : {"brute", "incremental"}) {
+    const auto builder = make_table_builder(name);
+    const PreintegrationTable ta = builder->build(a, 1.5), tb = builder->build(b, 1.5);
+    double m = 0, asym = 0;
+    for (int f = 0; f < n; ++f)
+      for (int k = 0; k < n; ++k)
+        for (int c = 0; c < 4; ++c) {
+          m = std::max(m, double(std::abs(ta.entry(f, k)[c] - tb.entry(n - 1 - f, n - 1 - k)[c])));
+          asym = std::max(asym, double(std::abs(ta.entry(f, k)[c] - ta.entry(k, f)[c])));
+        }
+    EXPECT_LE(m, 2e-6) << name;
+    EXPECT_GT(asym, 0.05) << name;  // front and back really differ
+  }
+}
+
+TEST(TableBuilders, ConstantTransferFunctionGivesTheHomogeneousSlabEverywhere) {
+  const DiscreteTf tf(TransferFunction({{0, 0.2, 0.4, 0.8, 1.3}, {10, 0.2, 0.4, 0.8, 1.3}}), 40);
+  const double a = 1 - std::exp(-1.3 * 0.9);
+  for (const char* name : {"brute", "incremental", "engel"}) {
+    const PreintegrationTable t = make_table_builder(name)->build(tf, 0.9);
+    for (int f = 0; f < 40; f += 3) {
+      for (int b = 0; b < 40; b += 5) {
+        EXPECT_NEAR(t.entry(f, b)[3], a, 1e-6) << name;
+        if (std::string(name) != "engel") {
+          EXPECT_NEAR(t.entry(f, b)[2], 0.8 * a, 1e-6) << name;
+        }
+      }
+    }
+  }
+}
+
+// Engel et al.'s table gets the opacity exactly (the optical depth ignores
+// ordering) and overestimates colour, since nothing inside a slab is attenuated.
+TEST(EngelBuilder, ExactOpacityAndColourFromAbove) {
+  const DiscreteTf tf(test::random_spiky_tf(11, 2.0), 64);
+  const PreintegrationTable ref = BruteBuilder().build(tf, 1.0);
+  const PreintegrationTable engel = make_table_builder("engel")->build(tf, 1.0);
+  EXPECT_LE(max_difference(ref, engel, 3, 4), 1e-6);
+  for (std::size_t k = 0; k < ref.data().size(); ++k)
+    if (k % 4 != 3) {
+      ASSERT_GE(engel.data()[k], ref.data()[k] - 1e-6f);
+    }
+  EXPECT_GT(max_difference(ref, engel, 0, 3), 0.05);  // and the error is real
+}
+
+TEST(LengthTable, EverySliceIsTheTableForItsLength) {
+  const DiscreteTf tf(test::random_spiky_tf(13, 2.0), 24);
+  const auto incremental = make_table_builder("incremental");
+  const LengthTable lt = build_length_table(*incremental, tf, 5, 2.0);
+  ASSERT_EQ(lt.slices().size(), 5u);
+  ASSERT_EQ(lt.data().size(), 5u * 24 * 24 * 4);
+  for (float v : lt.slices()[0].data()) ASSERT_EQ(v, 0.0f);
+  for (int m = 1; m < 5; ++m) {
+    const PreintegrationTable ref = BruteBuilder().build(tf, 2.0 * m / 4);
+    EXPECT_LE(max_difference(ref, lt.slices()[m]), 1e-5) << m;
+  }
+  // Halfway between lengths 1.0 and 1.5, linear in l.
+  const Rgba mid = lt.lookup(1.25, 100, 40), lo = lt.lookup(1.0, 100, 40), hi = lt.lookup(1.5, 100, 40);
+  EXPECT_NEAR(mid[3], 0.5 * (lo[3] + hi[3]), 1e-7);
+  EXPECT_NE(lo[3], hi[3]);
+}
+
+TEST(TableBuilders, SameBytesForAnyThreadCount) {
+  const DiscreteTf tf(test::random_spiky_tf(17, 2.0), 100);
+  for (const char* name : {"brute", "incremental", "sliced", "engel"}) {
+    const auto builder = make_table_builder(name);
+    std::vector<float> one, many;
+    {
+      tbb::global_control only(tbb::global_control::max_allowed_parallelism, 1);
+      one = builder->build(tf, 1.0).data();
+    }
+    many = builder->build(tf, 1.0).data();
+    EXPECT_EQ(one, many) << name;
+  }
+}
+
+TEST(TableBuilders, BadInputIsAnError) {
+  const DiscreteTf tf(test::random_spiky_tf(1, 1.0), 8);
+  EXPECT_THROW(make_table_builder("sliced-by-hand"), Error);
+  EXPECT_THROW(make_table_builder("incremental")->build(tf, 0.0), Error);
+  EXPECT_THROW(make_table_builder("brute")->build(tf, -1.0), Error);
+  EXPECT_THROW(build_length_table(*make_table_builder("engel"), tf, 1, 1.0), Error);
+  EXPECT_THROW(build_length_table(*make_table_builder("engel"), tf, 4, 0.0), Error);
+  EXPECT_THROW(DiscreteTf(test::random_spiky_tf(1, 1.0), 1), Error);
+}
+
+}  // namespace
+}  // namespace vri
