@@ -4,7 +4,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <vector>
 
 #include "incremental_diagonals.hpp"
@@ -14,41 +13,27 @@ namespace vri {
 
 namespace {
 
-using Entry = std::array<float, 4>;
 using V2 = double __attribute__((vector_size(16)));
-
-Entry to_entry(const SlabRgba& v) {
-  return {static_cast<float>(v.r), static_cast<float>(v.g), static_cast<float>(v.b), static_cast<float>(v.a)};
-}
-
-// Diagonals are built kGroup at a time and stored row by row: entries
-// (i, i+m0 .. i+m0+kGroup-1) are adjacent in memory, one diagonal is not.
-constexpr int kGroup = 32;
 
 struct Scratch {
   DiagonalSweep sweep;
-  std::vector<Entry> upper, lower;  // kGroup diagonals, n entries each
-  explicit Scratch(int n) : sweep(n), upper(std::size_t(kGroup) * n), lower(std::size_t(kGroup) * n) {}
+  GroupBuffer buffer;
+  explicit Scratch(int n) : sweep(n), buffer(n) {}
 };
 
 void build_group(const DiscreteTf& tf, const Pieces& pieces, double length, int m0, Scratch& s,
                  PreintegrationTable& table) {
   const int n = tf.size(), m1 = std::min(m0 + kGroup, n);
-  const auto at = [n](int m_offset, int i) { return std::size_t(m_offset) * n + i; };
   for (int m = m0; m < m1; ++m) {
     s.sweep.weights(pieces, length, m);
-    Entry* upper = &s.upper[at(m - m0, 0)];
-    Entry* lower = &s.lower[at(m - m0, 0)];
+    Entry* upper = s.buffer.upper_of(n, m - m0);
+    Entry* lower = s.buffer.lower_of(n, m - m0);
     s.sweep.composite(&tf[0], m, [&](int i, const SlabRgba& u, const SlabRgba& l) {
       upper[i] = to_entry(u);
       lower[i] = to_entry(l);
     });
   }
-  for (int r = 0; r < n; ++r)
-    for (int m = m0; m < m1; ++m) {
-      if (r + m < n) std::copy_n(s.upper[at(m - m0, r)].data(), 4, table.entry(r, r + m));
-      if (r - m >= 0) std::copy_n(s.lower[at(m - m0, r - m)].data(), 4, table.entry(r, r - m));
-    }
+  s.buffer.store(m0, m1, table);
 }
 
 }  // namespace

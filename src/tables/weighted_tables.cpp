@@ -3,6 +3,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -14,13 +15,9 @@ namespace vri {
 
 namespace {
 
-void store(float* e, double r, double g, double b, double a) {
-  e[0] = static_cast<float>(r), e[1] = static_cast<float>(g), e[2] = static_cast<float>(b), e[3] = static_cast<float>(a);
-}
-
 void store_packed(WeightedTables& t, int f, int b, const SlabWeights& w) {
-  store(t.front.entry(f, b), w.front.r, w.front.g, w.front.b, w.front.a);
-  store(t.back.entry(f, b), w.back.r, w.back.g, w.back.b, w.back.a);
+  std::copy_n(to_entry(w.front).data(), 4, t.front.entry(f, b));
+  std::copy_n(to_entry(w.back).data(), 4, t.back.entry(f, b));
 }
 
 // beta(A) = int_0^1 u A e^{-A u} du: the series sum_n (-1)^n A^(n+1) / (n! (n+2))
@@ -42,8 +39,35 @@ SlabWeights split(const SlabRgba& c1, const SlabRgba& back) {
 struct Scratch {
   DiagonalSweep sweep;
   std::vector<SlabRgba> c1_up, c1_lo, g_up, g_lo;  // one diagonal of C_1 and of the ramped colours
-  explicit Scratch(int n) : sweep(n), c1_up(n), c1_lo(n), g_up(n), g_lo(n) {}
+  GroupBuffer front, back;
+  explicit Scratch(int n) : sweep(n), c1_up(n), c1_lo(n), g_up(n), g_lo(n), front(n), back(n) {}
 };
+
+void build_group(const DiscreteTf& tf, const Pieces& pieces, const std::vector<TfSample>& ramped,
+                 const std::vector<TfSample>& white_ramped, double length, int m0, Scratch& s, WeightedTables& t) {
+  const int n = tf.size(), m1 = std::min(m0 + kGroup, n);
+  for (int m = m0; m < m1; ++m) {
+    s.sweep.weights(pieces, length, m);
+    s.sweep.composite(&tf[0], m, [&](int i, const SlabRgba& u, const SlabRgba& l) { s.c1_up[i] = u, s.c1_lo[i] = l; });
+    s.sweep.composite(ramped.data(), m, [&](int i, const SlabRgba& u, const SlabRgba& l) { s.g_up[i] = u, s.g_lo[i] = l; });
+    // C_W = (C_G - f C_1) / (j - f) for front index f, back index j: above
+    // the diagonal f = i, j - f = m; below it f = i + m, j - f = -m.
+    const auto back = [m](const SlabRgba& g, double gs, const SlabRgba& c1, double f, double sign) {
+      const double w = sign / m;
+      return SlabRgba{(g.r - f * c1.r) * w, (g.g - f * c1.g) * w, (g.b - f * c1.b) * w, (gs - f * c1.a) * w};
+    };
+    Entry *uf = s.front.upper_of(n, m - m0), *ub = s.back.upper_of(n, m - m0);
+    Entry *lf = s.front.lower_of(n, m - m0), *lb = s.back.lower_of(n, m - m0);
+    s.sweep.composite(white_ramped.data(), m, [&](int i, const SlabRgba& gs_up, const SlabRgba& gs_lo) {
+      const SlabWeights up = split(s.c1_up[i], back(s.g_up[i], gs_up.r, s.c1_up[i], i, 1));
+      const SlabWeights lo = split(s.c1_lo[i], back(s.g_lo[i], gs_lo.r, s.c1_lo[i], i + m, -1));
+      uf[i] = to_entry(up.front), ub[i] = to_entry(up.back);
+      lf[i] = to_entry(lo.front), lb[i] = to_entry(lo.back);
+    });
+  }
+  s.front.store(m0, m1, t.front);
+  s.back.store(m0, m1, t.back);
+}
 
 }  // namespace
 
@@ -63,22 +87,11 @@ WeightedTables build_weighted_tables(const DiscreteTf& tf, double length) {
     store_packed(t, i, i, split({c.r * a, c.g * a, c.b * a, a}, {c.r * b, c.g * b, c.b * b, b}));
   });
   const Pieces pieces(tf);
+  // As IncrementalBuilder: per-thread scratch, fully overwritten before it is read.
   tbb::enumerable_thread_specific<Scratch> scratch([n] { return Scratch(n); });
-  tbb::parallel_for(1, n, [&](int m) {
-    Scratch& s = scratch.local();
-    s.sweep.weights(pieces, length, m);
-    s.sweep.composite(&tf[0], m, [&](int i, const SlabRgba& u, const SlabRgba& l) { s.c1_up[i] = u, s.c1_lo[i] = l; });
-    s.sweep.composite(ramped.data(), m, [&](int i, const SlabRgba& u, const SlabRgba& l) { s.g_up[i] = u, s.g_lo[i] = l; });
-    // C_W = (C_G - f C_1) / (j - f) for front index f, back index j: above
-    // the diagonal f = i, j - f = m; below it f = i + m, j - f = -m.
-    const auto back = [m](const SlabRgba& g, double gs, const SlabRgba& c1, double f, double sign) {
-      const double w = sign / m;
-      return SlabRgba{(g.r - f * c1.r) * w, (g.g - f * c1.g) * w, (g.b - f * c1.b) * w, (gs - f * c1.a) * w};
-    };
-    s.sweep.composite(white_ramped.data(), m, [&](int i, const SlabRgba& gs_up, const SlabRgba& gs_lo) {
-      store_packed(t, i, i + m, split(s.c1_up[i], back(s.g_up[i], gs_up.r, s.c1_up[i], i, 1)));
-      store_packed(t, i + m, i, split(s.c1_lo[i], back(s.g_lo[i], gs_lo.r, s.c1_lo[i], i + m, -1)));
-    });
+  const int groups = (n - 1 + kGroup - 1) / kGroup;
+  tbb::parallel_for(0, groups, [&](int g) {
+    build_group(tf, pieces, ramped, white_ramped, length, 1 + g * kGroup, scratch.local(), t);
   });
   return t;
 }
