@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# lighting_results.sh [BUILD_DIR] [SIZE]: the lit scenes (scenes/*_lit.json,
+# four narrow transfer-function spikes) at SIZE x SIZE with lit `exact`
+# (tolerance 1e-6) and lit `preint1`, lighting.mode sampled and interpolated,
+# at steps 1 and 2. Writes docs/lighting/<scene>_<method>.png and prints the
+# table of docs/LIGHTING.md: per method the colour error against exact (worst
+# of r, g, b: RMS, max, share of pixels off by more than 1/255, by
+# `vri compare`), the shading error (RMS of (lit - unlit) - (lit - unlit) of
+# exact, r, g, b) and the render time.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}; size=${2:-256}
+vri=$build/vri; tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+mkdir -p docs/lighting
+# A copy of the scene with the data path made absolute, lit in `mode` (or unlit).
+variant() {  # scene mode out
+  local mode=$2 enabled=true
+  if [ "$mode" = unlit ]; then mode=sampled enabled=false; fi
+  sed -e "s|\"\.\./data/|\"$PWD/data/|" -e "s|\"mode\": \"[a-z]*\"|\"mode\": \"$mode\"|" \
+      -e "s|\"enabled\": true|\"enabled\": $enabled|" "$1" > "$3"
+}
+render() {  # scene out.npy args... -> prints seconds
+  "$vri" render "$1" -o "$2" --width "$size" --height "$size" "${@:3}" 2>&1 | sed -n 's/.* in \([0-9.e-]*\) s.*/\1/p'
+}
+colour_err() {  # reference image: worst r, g, b RMS / max / share
+  "$vri" compare "$1" "$2" | awk 'NR > 1 && $1 != "a" { if ($3 > r) r = $3; if ($4 > m) m = $4; if ($2 > s) s = $2 }
+                                  END { printf "%.2e | %.2e | %.1f%%", r, m, 100 * s }'
+}
+shading_err() {  # lit unlit lit_exact unlit_exact
+  python3 - "$@" <<'PY'
+import array, ast, math, sys
+def load(p):
+    b = open(p, 'rb').read(); n = int.from_bytes(b[8:10], 'little')
+    h = ast.literal_eval(b[10:10 + n].decode()); a = array.array('f' if h['descr'][-1] == '4' else 'd')
+    a.frombytes(b[10 + n:]); return a
+A, B, C, D = map(load, sys.argv[1:5])
+e = [(A[i] - B[i]) - (C[i] - D[i]) for i in range(len(A)) if i % 4 != 3]
+print("%.2e" % math.sqrt(sum(x * x for x in e) / len(e)))
+PY
+}
+echo "| scene | method | step | colour RMS | colour max | share > 1/255 | shading RMS | time (s) |"
+echo "|---|---|---|---|---|---|---|---|"
+for scene in scenes/*_lit.json; do
+  name=$(basename "$scene" .json)
+  for mode in sampled interpolated unlit; do variant "$scene" $mode "$tmp/$mode.json"; done
+  t=$(render "$tmp/sampled.json" "$tmp/exact.npy" --method exact --tolerance 1e-6)
+  render "$tmp/unlit.json" "$tmp/exact_unlit.npy" --method exact --tolerance 1e-6 > /dev/null
+  render "$tmp/sampled.json" "docs/lighting/${name}_exact.png" --method exact --tolerance 1e-6 > /dev/null
+  echo "| $name | exact | - | - | - | - | - | $t |"
+  for step in 1 2; do
+    render "$tmp/unlit.json" "$tmp/unlit.npy" --method preint1 --step $step > /dev/null
+    for mode in sampled interpolated; do
+      t=$(render "$tmp/$mode.json" "$tmp/$mode.npy" --method preint1 --step $step)
+      render "$tmp/$mode.json" "docs/lighting/${name}_${mode}_step${step}.png" --method preint1 --step $step > /dev/null
+      echo "| $name | preint1 $mode | $step | $(colour_err "$tmp/exact.npy" "$tmp/$mode.npy") |" \
+           "$(shading_err "$tmp/$mode.npy" "$tmp/unlit.npy" "$tmp/exact.npy" "$tmp/exact_unlit.npy") | $t |"
+    done
+  done
+done
