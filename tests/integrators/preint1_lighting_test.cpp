@@ -1,6 +1,7 @@
 // Lit preint1 (SPEC §5, lighting.mode sampled / interpolated) against lit exact.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -37,6 +38,32 @@ Scene small(const char* name, int side) {
   Scene s = load_scene(test::source_path(std::string("scenes/") + name));
   s.camera.width = s.camera.height = side;
   return s;
+}
+
+// Constant shading terms take the tables apart: a = 1, b = 0 must give the
+// unlit image (D_front + D_back = C_1), a = 0, b = 1 (ks = 1, p = 0) the
+// opacity in every colour channel (S_front + S_back = alpha). The field has
+// no flat spot, where SPEC §5 would drop the specular term.
+TEST(Preint1Lighting, ConstantTermsGiveUnlitColourAndOpacity) {
+  const GridVolume volume = test::volume_from({24, 24, 24}, [](double x, double y, double z) {
+    return 3.5 * (x + y + z) + 10 * std::sin(0.3 * x) * std::cos(0.2 * y);
+  });
+  const TransferFunction tf = small("neghip_lit.json", 1).transfer_function;
+  const Camera camera({.eye = {70, 55, 80}, .target = {11.5, 11.5, 11.5}, .up = {0, 0, 1}, .width = 24, .height = 24});
+  const MethodSpec pre{.name = "preint1", .step = 1.3};  // leaves partial last slabs
+  const auto image = [&](const Lighting& l) { return render(camera, *make_integrator(pre, volume, tf, l)); };
+  const Image unlit = image({});
+  for (const char* mode : {"sampled", "interpolated"}) {
+    const Image colour = image({true, 1, 0, 0, 32, mode}), white = image({true, 0, 0, 1, 0, mode});
+    double worst_colour = 0, worst_white = 0;
+    for (std::size_t i = 0; i < unlit.data().size(); ++i) {
+      worst_colour = std::max(worst_colour, double(std::abs(colour.data()[i] - unlit.data()[i])));
+      worst_white = std::max(worst_white, double(std::abs(white.data()[i] - unlit.data()[i - i % 4 + 3])));
+    }
+    EXPECT_LT(worst_colour, 1e-5) << mode;
+    EXPECT_LT(worst_white, 1e-5) << mode;
+  }
+  EXPECT_GT(*std::max_element(unlit.data().begin(), unlit.data().end()), 0.3f);  // not an empty image
 }
 
 // Four transparent isosurfaces (narrow spikes) of neghip, 32 x 32: both modes

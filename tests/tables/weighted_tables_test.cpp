@@ -3,6 +3,7 @@
 #include "vri/tables/weighted_tables.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -75,6 +76,17 @@ TEST(WeightedTables, HomogeneousSlabIsClosedForm) {
       EXPECT_NEAR(w.front.entry(i, i)[2], 1 - std::exp(-A) - s, 1e-7) << l;
     }
   }
+}
+
+TEST(WeightedTables, SameBytesForAnyThreadCount) {
+  const DiscreteTf tf(test::random_spiky_tf(5, 3.0), 200);
+  const auto build = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return build_weighted_tables(tf, 1.0);
+  };
+  const WeightedTables one = build(1), two = build(2);
+  EXPECT_EQ(one.front.data(), two.front.data());
+  EXPECT_EQ(one.back.data(), two.back.data());
 }
 
 TEST(WeightedTables, BadLengthIsAnError) {
