@@ -53,10 +53,8 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
     return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p);
   }
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
-  if (spec.name == "preint1") {
-    if (lighting.enabled) throw Error("preint1: lighting is not supported yet; disable it or use riemann/exact");
-    return std::make_unique<Preint1Integrator>(volume, tf, spec.step, spec.table_size, spec.builder);
-  }
+  if (spec.name == "preint1")
+    return std::make_unique<Preint1Integrator>(volume, tf, spec.step, spec.table_size, spec.builder, lighting);
   if (is_mesh_method(spec.name))
     throw Error("method '" + spec.name + "' needs a tetrahedral mesh (volume {\"file\": \"x.vtk\"} or " +
                 "{\"builtin\": \"tetrahedralized\", ...})");

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "preint1_slabs.hpp"
 #include "vri/core/error.hpp"
 #include "vri/tables/slab_integral.hpp"
 #include "vri/tables/table_builder.hpp"
@@ -19,36 +20,53 @@ double world_step(const GridVolume& volume, double step) {
 }  // namespace
 
 Preint1Integrator::Preint1Integrator(const GridVolume& volume, const TransferFunction& tf, double step,
-                                     int table_size, const std::string& builder)
+                                     int table_size, const std::string& builder, const Lighting& lighting)
     : volume_(volume),
       h_(world_step(volume, step)),
       tf_(tf, table_size),
-      table_(make_table_builder(builder)->build(tf_, h_)) {}
+      table_(make_table_builder(builder)->build(tf_, h_)) {
+  if (!lighting.enabled) return;
+  if (lighting.mode != "sampled" && lighting.mode != "interpolated")
+    throw Error("preint1: lighting mode must be sampled or interpolated, got '" + lighting.mode + "'");
+  shader_.emplace(lighting, volume);
+  if (lighting.mode == "interpolated") weighted_.emplace(build_weighted_tables(tf_, h_));
+}
 
-Rgba Preint1Integrator::integrate(const Ray& ray) const {
+template <class Policy>
+Rgba Preint1Integrator::march(const Ray& ray, const Policy& policy) const {
   const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const long long full = static_cast<long long>(std::floor(iv->length() / h_));
   double T = 1, C[3] = {0, 0, 0};
-  const auto composite = [&](double r, double g, double b, double a) {
-    C[0] += T * r;
-    C[1] += T * g;
-    C[2] += T * b;
-    T *= 1 - a;
+  const auto composite = [&](const Rgba& v) {
+    C[0] += T * v[0];
+    C[1] += T * v[1];
+    C[2] += T * v[2];
+    T *= 1 - v[3];
   };
-  double s_front = volume_.sample(ray.at(iv->t0));
+  Vec3 p = ray.at(iv->t0);
+  double s_front = volume_.sample(p);
+  auto front = policy.at(p);
   for (long long k = 1; k <= full; ++k) {
-    const double s_back = volume_.sample(ray.at(iv->t0 + k * h_));
-    const Rgba v = table_.lookup(s_front, s_back);
-    composite(v[0], v[1], v[2], v[3]);
+    p = ray.at(iv->t0 + k * h_);
+    const double s_back = volume_.sample(p);
+    const auto back = policy.at(p);
+    composite(policy.slab(front, back, s_front, s_back));
     s_front = s_back;
+    front = back;
   }
   const double rest = iv->t1 - (iv->t0 + full * h_);
   if (rest > 0) {
-    const SlabRgba v = exact_slab(tf_, s_front, volume_.sample(ray.at(iv->t1)), rest);
-    composite(v.r, v.g, v.b, v.a);
+    p = ray.at(iv->t1);
+    composite(policy.last(front, policy.at(p), s_front, volume_.sample(p), rest));
   }
   return {C[0], C[1], C[2], 1 - T};
+}
+
+Rgba Preint1Integrator::integrate(const Ray& ray) const {
+  if (weighted_) return march(ray, preint1::Interpolated{*weighted_, tf_, *shader_, ray.dir});
+  if (shader_) return march(ray, preint1::Sampled{table_, tf_, *shader_, ray.dir});
+  return march(ray, preint1::Unlit{table_, tf_});
 }
 
 }  // namespace vri

@@ -69,7 +69,8 @@ TEST(Preint1, BadParametersAreErrors) {
   EXPECT_THROW(Preint1Integrator(scene.grid(), scene.transfer_function, 0.0, 256, "incremental"), Error);
   EXPECT_THROW(Preint1Integrator(scene.grid(), scene.transfer_function, 1.0, 1, "incremental"), Error);
   EXPECT_THROW(Preint1Integrator(scene.grid(), scene.transfer_function, 1.0, 256, "fastest"), Error);
-  EXPECT_THROW(make_integrator({.name = "preint1"}, scene.grid(), scene.transfer_function, {.enabled = true}), Error);
+  EXPECT_THROW(make_integrator({.name = "preint1"}, scene.grid(), scene.transfer_function, {.enabled = true, .mode = "phong"}),
+               Error);
 }
 
 }  // namespace

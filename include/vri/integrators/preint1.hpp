@@ -7,11 +7,20 @@
 // under the table's own discretisation (exact_slab): a dedicated lookup
 // instead of a table with lengths, so it costs O(pieces crossed) once per ray
 // and adds no interpolation error in the length.
+//
+// Lighting (SPEC §5, `lighting.mode`): `sampled` lights each slab's
+// pre-integrated colour with one normal, the mean of its two samples'
+// gradients; `interpolated` (Lum, Wilson & Ma 2004) interpolates the shading
+// across the slab with the weighted tables of tables/weighted_tables.hpp.
+#include <optional>
 #include <string>
 
 #include "vri/integrators/integrator.hpp"
+#include "vri/shading/headlight_shader.hpp"
+#include "vri/shading/lighting.hpp"
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/preintegration_table.hpp"
+#include "vri/tables/weighted_tables.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri {
@@ -19,9 +28,10 @@ namespace vri {
 class Preint1Integrator final : public Integrator {
  public:
   // step in voxel units (1e-4 .. 1e4); the table has table_size entries a side
-  // and is built with the named builder (table_builder.hpp).
+  // and is built with the named builder (table_builder.hpp). Throws
+  // vri::Error for a lighting mode other than sampled or interpolated.
   Preint1Integrator(const GridVolume& volume, const TransferFunction& tf, double step, int table_size,
-                    const std::string& builder);
+                    const std::string& builder, const Lighting& lighting = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "preint1"; }
 
@@ -32,6 +42,11 @@ class Preint1Integrator final : public Integrator {
   double h_;  // world units
   DiscreteTf tf_;
   PreintegrationTable table_;
+  std::optional<HeadlightShader> shader_;     // when lit
+  std::optional<WeightedTables> weighted_;    // when lit and interpolated
+
+  template <class Policy>
+  Rgba march(const Ray& ray, const Policy& policy) const;
 };
 
 }  // namespace vri

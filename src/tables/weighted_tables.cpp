@@ -1,0 +1,100 @@
+#include "vri/tables/weighted_tables.hpp"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <vector>
+
+#include "incremental_diagonals.hpp"
+#include "vri/tables/brute_builder.hpp"
+#include "vri/tables/table_builder.hpp"
+
+namespace vri {
+
+namespace {
+
+void store(float* e, double r, double g, double b, double a) {
+  e[0] = static_cast<float>(r), e[1] = static_cast<float>(g), e[2] = static_cast<float>(b), e[3] = static_cast<float>(a);
+}
+
+void store_packed(WeightedTables& t, int f, int b, const SlabWeights& w) {
+  store(t.front.entry(f, b), w.front.r, w.front.g, w.front.b, w.front.a);
+  store(t.back.entry(f, b), w.back.r, w.back.g, w.back.b, w.back.a);
+}
+
+// beta(A) = int_0^1 u A e^{-A u} du: the series sum_n (-1)^n A^(n+1) / (n! (n+2))
+// while A is small (the closed form cancels there), else the closed form.
+double beta(double A) {
+  if (A < 0.5) {
+    double term = A, sum = 0;  // term = (-1)^n A^(n+1) / n!
+    for (int n = 0; n < 24; ++n, term *= -A / n) sum += term / (n + 2);
+    return sum;
+  }
+  return (-std::expm1(-A) - A * std::exp(-A)) / A;
+}
+
+// The unweighted slab (C_1, alpha) split by the back-weighted (D, S).
+SlabWeights split(const SlabRgba& c1, const SlabRgba& back) {
+  return {{c1.r - back.r, c1.g - back.g, c1.b - back.b, c1.a}, back};
+}
+
+struct Scratch {
+  DiagonalSweep sweep;
+  std::vector<SlabRgba> c1_up, c1_lo, g_up, g_lo;  // one diagonal of C_1 and of the ramped colours
+  explicit Scratch(int n) : sweep(n), c1_up(n), c1_lo(n), g_up(n), g_lo(n) {}
+};
+
+}  // namespace
+
+WeightedTables build_weighted_tables(const DiscreteTf& tf, double length) {
+  check_slab_length(length);
+  const int n = tf.size();
+  WeightedTables t{PreintegrationTable(tf.axis(), length), PreintegrationTable(tf.axis(), length)};
+  // The globally ramped colours (§4.3, Fig. 6b): colour times index, and white times index.
+  std::vector<TfSample> ramped(n), white_ramped(n);
+  for (int k = 0; k < n; ++k) {
+    ramped[k] = {tf[k].r * k, tf[k].g * k, tf[k].b * k, tf[k].tau};
+    white_ramped[k] = {double(k), 0, 0, tf[k].tau};
+  }
+  tbb::parallel_for(0, n, [&](int i) {
+    const double A = tf[i].tau * length, a = -std::expm1(-A), b = beta(A);
+    const TfSample& c = tf[i];
+    store_packed(t, i, i, split({c.r * a, c.g * a, c.b * a, a}, {c.r * b, c.g * b, c.b * b, b}));
+  });
+  const Pieces pieces(tf);
+  tbb::enumerable_thread_specific<Scratch> scratch([n] { return Scratch(n); });
+  tbb::parallel_for(1, n, [&](int m) {
+    Scratch& s = scratch.local();
+    s.sweep.weights(pieces, length, m);
+    s.sweep.composite(&tf[0], m, [&](int i, const SlabRgba& u, const SlabRgba& l) { s.c1_up[i] = u, s.c1_lo[i] = l; });
+    s.sweep.composite(ramped.data(), m, [&](int i, const SlabRgba& u, const SlabRgba& l) { s.g_up[i] = u, s.g_lo[i] = l; });
+    // C_W = (C_G - f C_1) / (j - f) for front index f, back index j: above
+    // the diagonal f = i, j - f = m; below it f = i + m, j - f = -m.
+    const auto back = [m](const SlabRgba& g, double gs, const SlabRgba& c1, double f, double sign) {
+      const double w = sign / m;
+      return SlabRgba{(g.r - f * c1.r) * w, (g.g - f * c1.g) * w, (g.b - f * c1.b) * w, (gs - f * c1.a) * w};
+    };
+    s.sweep.composite(white_ramped.data(), m, [&](int i, const SlabRgba& gs_up, const SlabRgba& gs_lo) {
+      store_packed(t, i, i + m, split(s.c1_up[i], back(s.g_up[i], gs_up.r, s.c1_up[i], i, 1)));
+      store_packed(t, i + m, i, split(s.c1_lo[i], back(s.g_lo[i], gs_lo.r, s.c1_lo[i], i + m, -1)));
+    });
+  });
+  return t;
+}
+
+WeightedTables brute_weighted_tables(const DiscreteTf& tf, double length) {
+  check_slab_length(length);
+  WeightedTables t{PreintegrationTable(tf.axis(), length), PreintegrationTable(tf.axis(), length)};
+  tbb::parallel_for(0, tf.size(), [&](int f) {
+    for (int b = 0; b < tf.size(); ++b) store_packed(t, f, b, pack(weighted_slab(tf, f, b, length, quadrature_piece)));
+  });
+  return t;
+}
+
+SlabWeights exact_weighted_slab(const DiscreteTf& tf, double s_f, double s_b, double length) {
+  return pack(weighted_slab(tf, tf.axis().index(s_f), tf.axis().index(s_b), length,
+                            [](const TfSample& p, const TfSample& q, double d) { return linear_piece(p, q, d).forward; }));
+}
+
+}  // namespace vri

@@ -1,0 +1,86 @@
+// The weighted tables of interpolated lighting (tables/weighted_tables.hpp)
+// against the unweighted table and against every entry integrated on its own.
+#include "vri/tables/weighted_tables.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "tables/random_tf.hpp"
+#include "vri/core/error.hpp"
+#include "vri/tables/brute_builder.hpp"
+#include "vri/tables/incremental_builder.hpp"
+
+namespace vri {
+namespace {
+
+struct Case {
+  unsigned seed;
+  int n;
+  double length, max_tau;
+};
+constexpr Case kCases[] = {{1, 64, 1.0, 0.5}, {2, 64, 0.5, 4.0}, {3, 64, 3.0, 20.0}, {4, 33, 1.0, 300.0}};
+
+// Worst |a - b| over entries and the four channels.
+double max_difference(const PreintegrationTable& a, const PreintegrationTable& b) {
+  double m = 0;
+  for (std::size_t k = 0; k < a.data().size(); ++k) m = std::max(m, double(std::abs(a.data()[k] - b.data()[k])));
+  return m;
+}
+
+// Front + back = the unweighted table (C, and S = alpha), for the fast tables
+// and for the reference, whose front and back are integrated separately.
+TEST(WeightedTables, FrontPlusBackIsTheUnweightedTable) {
+  for (const Case c : kCases) {
+    const DiscreteTf tf(test::random_spiky_tf(c.seed, c.max_tau), c.n);
+    const PreintegrationTable c1 = IncrementalBuilder().build(tf, c.length);
+    for (const WeightedTables& w : {build_weighted_tables(tf, c.length), brute_weighted_tables(tf, c.length)}) {
+      double worst = 0;
+      for (int f = 0; f < c.n; ++f)
+        for (int b = 0; b < c.n; ++b) {
+          const float *u = c1.entry(f, b), *front = w.front.entry(f, b), *back = w.back.entry(f, b);
+          for (int ch = 0; ch < 3; ++ch) worst = std::max(worst, double(std::abs(front[ch] + back[ch] - u[ch])));
+          worst = std::max(worst, double(std::abs(front[3] - u[3])));  // S_front + S_back = alpha
+          // Each weighted part lies between 0 and the whole.
+          EXPECT_GE(back[3], -1e-6f);
+          EXPECT_LE(back[3], u[3] + 1e-6f);
+        }
+      EXPECT_LE(worst, 1e-5) << "seed " << c.seed;
+    }
+  }
+}
+
+// The paper's O(N^2) build (C_W = (C_G - i C_1) / (j - i)) against brute
+// force. Measured worst: see docs/LIGHTING.md.
+TEST(WeightedTables, EqualBruteWeightedInEveryEntry) {
+  for (const Case c : kCases) {
+    const DiscreteTf tf(test::random_spiky_tf(c.seed, c.max_tau), c.n);
+    const WeightedTables fast = build_weighted_tables(tf, c.length), ref = brute_weighted_tables(tf, c.length);
+    EXPECT_LE(max_difference(fast.front, ref.front), 1e-5) << "seed " << c.seed;
+    EXPECT_LE(max_difference(fast.back, ref.back), 1e-5) << "seed " << c.seed;
+    EXPECT_GT(*std::max_element(ref.back.data().begin(), ref.back.data().end()), 0.1f) << "seed " << c.seed;
+  }
+}
+
+// A homogeneous slab in closed form: S_back = (1 - e^{-A}(1 + A)) / A.
+TEST(WeightedTables, HomogeneousSlabIsClosedForm) {
+  const DiscreteTf tf(TransferFunction({{0, 0.5, 0.25, 1, 0.01}, {1, 0.5, 0.25, 1, 3}}), 2);
+  for (double l : {0.1, 1.0, 5.0}) {
+    const WeightedTables w = build_weighted_tables(tf, l);
+    for (int i : {0, 1}) {
+      const double A = tf[i].tau * l, s = (1 - std::exp(-A) * (1 + A)) / A;
+      EXPECT_NEAR(w.back.entry(i, i)[3], s, 1e-7 * std::max(1.0, s)) << l;
+      EXPECT_NEAR(w.back.entry(i, i)[0], 0.5 * s, 1e-7) << l;
+      EXPECT_NEAR(w.front.entry(i, i)[2], 1 - std::exp(-A) - s, 1e-7) << l;
+    }
+  }
+}
+
+TEST(WeightedTables, BadLengthIsAnError) {
+  const DiscreteTf tf(test::random_spiky_tf(1, 1.0), 8);
+  EXPECT_THROW(build_weighted_tables(tf, 0.0), Error);
+}
+
+}  // namespace
+}  // namespace vri
