@@ -33,7 +33,7 @@ struct RenderArgs {
   std::string scene, output;
   std::optional<std::string> method;
   std::optional<double> step, tolerance;
-  std::optional<int> table_size, width, height;
+  std::optional<int> table_size, iterations, width, height;
   int threads = 0;
   std::optional<double> h0, hmin, hmax;
   std::optional<std::string> strategy, error_estimate, trace;
@@ -71,7 +71,11 @@ int run_render(const RenderArgs& args) {
   if (args.method) scene.method.name = *args.method;
   if (args.step) scene.method.step = *args.step;
   if (args.tolerance) scene.method.tolerance = *args.tolerance;
-  if (args.table_size) scene.method.table_size = *args.table_size;
+  if (args.table_size) {
+    scene.method.table_size = *args.table_size;
+    scene.method.table_size_given = true;
+  }
+  if (args.iterations) scene.method.iterations = *args.iterations;
   if (args.width) scene.camera.width = *args.width;
   if (args.height) scene.camera.height = *args.height;
   if (args.h0) scene.method.h0 = *args.h0;
@@ -146,6 +150,7 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--step", args->step, "Step size in voxel units");
   cmd->add_option("--tolerance", args->tolerance, "Error tolerance (exact, adaptive)");
   cmd->add_option("--table-size", args->table_size, "Pre-integration table size");
+  cmd->add_option("--iterations", args->iterations, "preint2*: parabola steps per table entry (1..4096)");
   cmd->add_option("--width", args->width, "Image width in pixels");
   cmd->add_option("--height", args->height, "Image height in pixels");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)");

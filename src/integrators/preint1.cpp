@@ -3,26 +3,17 @@
 #include <cmath>
 
 #include "preint1_slabs.hpp"
+#include "ray_steps.hpp"
 #include "vri/core/error.hpp"
 #include "vri/tables/slab_integral.hpp"
 #include "vri/tables/table_builder.hpp"
 
 namespace vri {
 
-namespace {
-
-double world_step(const GridVolume& volume, double step) {
-  if (!(step >= 1e-4 && step <= 1e4))
-    throw Error("preint1: step must be in [1e-4, 1e4] voxel units, got " + std::to_string(step));
-  return step * volume.voxel_unit();
-}
-
-}  // namespace
-
 Preint1Integrator::Preint1Integrator(const GridVolume& volume, const TransferFunction& tf, double step,
                                      int table_size, const std::string& builder, const Lighting& lighting)
     : volume_(volume),
-      h_(world_step(volume, step)),
+      h_(detail::world_step(volume, step, "preint1")),
       tf_(tf, table_size),
       table_(make_table_builder(builder)->build(tf_, h_)) {
   if (!lighting.enabled) return;

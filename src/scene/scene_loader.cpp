@@ -256,8 +256,12 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     method.step = m.number(mj, "step", method.step);
     method.tolerance = m.number(mj, "tolerance", method.tolerance);
     method.table_size = m.integer(mj, "table_size", method.table_size);
+    method.table_size_given = mj.contains("table_size");
     method.length_samples = m.integer(mj, "length_samples", method.length_samples);
     method.planes = m.integer(mj, "planes", method.planes);
+    method.iterations = m.integer(mj, "iterations", method.iterations);
+    if (method.iterations < 1 || method.iterations > MethodSpec::kMaxIterations)
+      throw Error(m.ctx + ": 'iterations' must be in [1, " + std::to_string(MethodSpec::kMaxIterations) + "]");
     method.h0 = m.number(mj, "h0", method.h0);
     method.hmin = m.number(mj, "hmin", method.hmin);
     method.hmax = m.number(mj, "hmax", method.hmax);

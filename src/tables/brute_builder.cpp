@@ -30,7 +30,7 @@ SlabRgba quadrature_piece(const TfSample& p, const TfSample& q, double d) {
   // In x = t/d: tau d = A + 2k x, depth D(x) = A x + k x^2, c linear;
   // C = int_0^1 c(x) (A + 2k x) exp(-D(x)) dx.
   const double x_max = reach_of_depth(A, k, 50);
-  const int panels = std::max(1, static_cast<int>(std::ceil(2 * std::max(A, B) * x_max)));
+  const int panels = panel_count(A, k, x_max, 0.5);
   const double w = x_max / panels;
   double C[3] = {0, 0, 0};
   for (int i = 0; i < panels; ++i) {

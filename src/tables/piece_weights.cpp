@@ -20,9 +20,8 @@ constexpr double kW[kG] = {0.1713244923791704 / 2, 0.3607615730481386 / 2, 0.467
 // int_0^1 exp(-x (a + k x)) dx for a thick piece: panels of optical depth <= 1,
 // stopping where the depth reaches 50 (the rest is below e^-50).
 double transmittance_integral(double a, double k) {
-  const double thick = std::max(a, a + 2 * k);
   const double x_max = reach_of_depth(a, k, 50);
-  const int panels = static_cast<int>(std::ceil(thick * x_max));
+  const int panels = panel_count(a, k, x_max, 1);
   const double w = x_max / panels;
   double sum = 0;
   for (int p = 0; p < panels; ++p)

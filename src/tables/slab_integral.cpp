@@ -1,6 +1,7 @@
 #include "vri/tables/slab_integral.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "vri/tables/piece_weights.hpp"
 
@@ -10,6 +11,13 @@ double reach_of_depth(double a, double k, double depth) {
   if (a + k <= depth) return 1;
   // The root of a x + k x^2 = depth in (0, 1), in the form without cancellation.
   return 2 * depth / (a + std::sqrt(a * a + 4 * k * depth));
+}
+
+int panel_count(double a, double k, double x_max, double per_panel) {
+  constexpr double kMaxPanels = 1 << 16;
+  const double panels = std::ceil(std::max(a, a + 2 * k * x_max) * x_max / per_panel);
+  // Written so that NaN saturates too.
+  return panels >= 1 ? static_cast<int>(std::min(panels, kMaxPanels)) : 1;
 }
 
 PiecePair linear_piece(const TfSample& p, const TfSample& q, double d) {

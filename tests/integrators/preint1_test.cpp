@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "integrators/bucky_support.hpp"
 #include "vri/core/error.hpp"
 #include "vri/integrators/make_integrator.hpp"
 #include "vri/render/image_compare.hpp"
@@ -34,20 +35,12 @@ TEST(Preint1, ConstantFieldMatchesClosedFormForAnyStep) {
 // (one scalar unit wide) on a gentle ramp; control points sit on the 256
 // table scalars, so the table's discretisation is exact.
 Scene spiky_bucky() {
-  const std::string json = R"({
-    "volume": {"file": "data/bucky_32x32x32_uint8.raw", "dims": [32, 32, 32], "type": "uint8"},
-    "transfer_function": {"points": [[0,0,0,0,0], [59,0.2,0.2,1,0], [60,0.2,0.4,1,0.6], [61,0.2,0.2,1,0],
-        [139,1,0.3,0.1,0], [140,1,0.6,0.1,1.5], [141,1,0.3,0.1,0], [200,0.9,0.9,0.9,0.02], [255,1,1,1,0.05]]},
-    "camera": {"eye": [73.837, 63.231, 89.748], "target": [15.5, 15.5, 15.5], "up": [0, 0, 1],
-               "width": 40, "height": 40}})";
-  return parse_scene(json, VRI_SOURCE_DIR);
+  return test::bucky_scene(R"([[0,0,0,0,0], [59,0.2,0.2,1,0], [60,0.2,0.4,1,0.6], [61,0.2,0.2,1,0],
+      [139,1,0.3,0.1,0], [140,1,0.6,0.1,1.5], [141,1,0.3,0.1,0], [200,0.9,0.9,0.9,0.02], [255,1,1,1,0.05]])",
+                           40);
 }
 
-double rms_alpha(const Scene& scene, const Image& reference, const MethodSpec& spec) {
-  const auto integrator = make_integrator(spec, scene.grid(), scene.transfer_function);
-  const Image image = render(Camera(scene.camera), *integrator);
-  return compare_images(reference.data(), image.data(), 4, 0.01)[3].rms;
-}
+using test::rms_alpha;
 
 TEST(Preint1, ConvergesToExactAndBeatsRiemannOnNarrowSpikes) {
   const Scene scene = spiky_bucky();

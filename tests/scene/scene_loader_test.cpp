@@ -31,6 +31,8 @@ TEST(SceneLoader, ReadsEveryKeyWithDefaults) {
   EXPECT_EQ(s.method.name, "riemann");
   EXPECT_DOUBLE_EQ(s.method.step, 0.25);
   EXPECT_EQ(s.method.table_size, 128);
+  EXPECT_TRUE(s.method.table_size_given);
+  EXPECT_EQ(s.method.iterations, 64);  // default
 }
 
 TEST(SceneLoader, PathsAreRelativeToTheSceneFile) {
@@ -87,6 +89,18 @@ TEST(SceneLoader, RefusesBadScenesWithOneClearLine) {
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "nowhere.raw", "dims": [2, 2, 2]}})", "cannot open");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "mesh.vtk"}})", "cannot open");
   expect_refused("{" + vol + ", " + kCamera + R"(, "transfer_function": {"file": "missing_tf.json"}})", "cannot open");
+}
+
+TEST(SceneLoader, ReadsAndChecksIterations) {
+  const std::string head = R"({"volume": {"builtin": "sphere", "dims": [8, 8, 8]},
+    "transfer_function": {"points": [[0, 1, 1, 1, 0.1]]}, )" + kCamera;
+  const Scene s = parse_scene(head + R"(, "method": {"name": "preint2", "iterations": 16}})", ".");
+  EXPECT_EQ(s.method.iterations, 16);
+  EXPECT_FALSE(s.method.table_size_given);
+  expect_refused(head + R"(, "method": {"iterations": 0}})", "'iterations' must be in [1, 4096]");
+  expect_refused(head + R"(, "method": {"iterations": 4097}})", "'iterations' must be in [1, 4096]");
+  expect_refused(head + R"(, "method": {"iterations": 2.5}})", "'iterations' must be an integer");
+  expect_refused(head + R"(, "method": {"iterations": "many"}})", "iterations");
 }
 
 TEST(MakeIntegrator, RefusesUnknownAndUnimplementedMethods) {

@@ -112,6 +112,29 @@ TEST(LengthTable, EverySliceIsTheTableForItsLength) {
   EXPECT_NE(lo[3], hi[3]);
 }
 
+// An extinction of 1e35 or 1e38 per unit makes every slab opaque at its very
+// front: alpha = 1 and the colour that of the front scalar (the limit of
+// int c dalpha as the opacity gathers at t = 0). The panel counts of the
+// quadratures grow like sqrt(tau l) there and once overflowed an int.
+TEST(TableBuilders, HugeExtinctionGivesTheOpaqueSlabLimit) {
+  for (const double tau : {1e35, 1e38}) {
+    const DiscreteTf tf(TransferFunction({{0, 0.9, 0.2, 0.1, 0}, {10, 0.1, 0.5, 0.7, tau}}), 16);
+    for (const char* name : {"brute", "incremental"}) {
+      const PreintegrationTable t = make_table_builder(name)->build(tf, 1.0);
+      for (int f = 0; f < 16; ++f)
+        for (int b = 0; b < 16; ++b) {
+          if (f == 0 && b == 0) continue;  // tau = 0 there: the empty slab
+          const float* e = t.entry(f, b);
+          ASSERT_EQ(e[3], 1.0f) << name << " tau " << tau << " entry " << f << ", " << b;
+          ASSERT_NEAR(e[0], tf[f].r, 1e-6) << name << " tau " << tau << " entry " << f << ", " << b;
+          ASSERT_NEAR(e[1], tf[f].g, 1e-6) << name << " tau " << tau << " entry " << f << ", " << b;
+          ASSERT_NEAR(e[2], tf[f].b, 1e-6) << name << " tau " << tau << " entry " << f << ", " << b;
+        }
+      for (int c = 0; c < 4; ++c) EXPECT_EQ(t.entry(0, 0)[c], 0.0f) << name;
+    }
+  }
+}
+
 TEST(TableBuilders, SameBytesForAnyThreadCount) {
   const DiscreteTf tf(test::random_spiky_tf(17, 2.0), 100);
   for (const char* name : {"brute", "incremental", "sliced", "engel"}) {

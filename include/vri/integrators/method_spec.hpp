@@ -10,13 +10,18 @@ struct MethodSpec {
   double step = 1.0;         // riemann, preint*: voxel units
   double tolerance = 1e-6;   // exact, adaptive
   int table_size = 256;      // preint*, pt*
+  bool table_size_given = false;  // named by the scene or a flag; else preint2-dual uses its own default (64)
+  int iterations = 64;       // preint2*: parabola steps per second-order table entry (1..4096)
   int length_samples = 64;   // pt, tet-raycast: lengths in the (l, s_f, s_b) table
   int planes = 0;            // pt-cylindrical: cylinder planes (0: table_size)
   // adaptive (Campagnolo et al. 2015 defaults), voxel units; strategy:
   // coupled, decoupled or guaranteed
   double h0 = 0.5, hmin = 0.1, hmax = 2.0;
   std::string strategy = "coupled";
-  std::string builder = "incremental";  // preint*: pre-integration table builder
+  // preint*: pre-integration table builder. preint2* use it when it names a
+  // second-order builder (plain, fast), else the fast one.
+  std::string builder = "incremental";
+  static constexpr int kMaxIterations = 4096;
 };
 
 }  // namespace vri

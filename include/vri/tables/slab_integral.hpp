@@ -34,6 +34,14 @@ PiecePair linear_piece(const TfSample& p, const TfSample& q, double d);
 // in [0, 1]; 1 if it does not. Quadratures stop there.
 double reach_of_depth(double a, double k, double depth);
 
+// Panels for a quadrature of exp(-(a x + k x^2)) over [0, x_max] such that no
+// panel is optically deeper than `per_panel`: the extinction's maximum on
+// [0, x_max] (at an end, since it is linear) times x_max. With x_max =
+// reach_of_depth(a, k, D) that is at most 2 D / per_panel whatever tau is
+// (an earlier max(a, a + 2k) x_max grew like sqrt(tau) and overflowed int near
+// tau = 1e35); saturated in double before the cast all the same.
+int panel_count(double a, double k, double x_max, double per_panel);
+
 // The slab from continuous index u_f to u_b (DiscreteTf::at_index) of length
 // l, composited piece by piece with `piece(front, back, d)` -> SlabRgba.
 // u_f == u_b is the homogeneous slab. O(|u_b - u_f| + 1).
