@@ -5,7 +5,9 @@
 #include <cmath>
 #include <utility>
 
+#include "vri/core/vec3.hpp"
 #include "vri/volume/cell_traversal.hpp"
+#include "vri/volume/gradient_field.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri {
@@ -39,5 +41,11 @@ Cubic combine(double a, const Cubic& p, double b, const Cubic& q);
 // The roots of the cubic strictly inside (0, len) where it changes sign,
 // ascending; returns how many (0..3).
 int sign_changes(const Cubic& s, double len, double out[3]);
+
+// Lighting along a cell segment: the gradient as three cubics (grad) and the
+// roots of N.dir inside (0, len), where |N.dir| has a kink (kinks, ascending);
+// returns how many kinks (0..3).
+int gradient_along(const GradientField& gradients, const CellSegment& seg, Vec3 dir, Cubic (&grad)[3],
+                   double (&kinks)[3]);
 
 }  // namespace vri

@@ -45,12 +45,11 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
                                             const TransferFunction& tf, const Lighting& lighting) {
   if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step, lighting);
   if (spec.name == "adaptive") {
-    if (lighting.enabled) throw Error("method 'adaptive' does not support lighting yet");
     const AdaptiveParams p{spec.tolerance, spec.h0, spec.hmin, spec.hmax,
                            parse_adaptive_strategy(spec.strategy)};
     if (p.strategy == AdaptiveStrategy::Guaranteed)
-      return std::make_unique<GuaranteedAdaptiveIntegrator>(volume, tf, p);
-    return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p);
+      return std::make_unique<GuaranteedAdaptiveIntegrator>(volume, tf, p, lighting);
+    return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p, lighting);
   }
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
   if (spec.name == "preint1") {
