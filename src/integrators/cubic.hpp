@@ -17,6 +17,8 @@ struct Cubic {
   std::array<double, 4> c{};
   double operator()(double t) const { return ((c[3] * t + c[2]) * t + c[1]) * t + c[0]; }
   double derivative(double t) const { return (3 * c[3] * t + 2 * c[2]) * t + c[1]; }
+  // The line from v0 at t = 0 to v1 at t = len (constant v0 when len is 0).
+  static Cubic linear(double v0, double v1, double len) { return {{v0, len > 0 ? (v1 - v0) / len : 0, 0, 0}}; }
 
   // Critical points strictly inside (0, len), ascending; returns how many (0..2).
   int critical_points(double len, double out[2]) const;

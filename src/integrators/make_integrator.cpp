@@ -64,9 +64,9 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
 
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
                                             const TransferFunction& tf, const Lighting& lighting) {
-  if (lighting.enabled) throw Error("lighting is not implemented for tetrahedral meshes");
-  if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance);
-  if (spec.name == "tet-raycast") return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf));
+  if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance, lighting);
+  if (spec.name == "tet-raycast")
+    return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf), lighting);
   if (spec.name == "pt" || spec.name == "pt-cylindrical")
     throw Error("method '" + spec.name + "' projects whole tetrahedra; it has no per-ray integrator");
   if (!is_mesh_method(spec.name) && is_known(spec.name))

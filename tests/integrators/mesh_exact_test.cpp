@@ -74,6 +74,62 @@ TEST(MeshExact, SameBytesWithAnyThreadCount) {
   ASSERT_EQ(0, std::memcmp(one.data().data(), two.data().data(), one.data().size() * sizeof(float)));
 }
 
+// Lit (SPEC §5): on a linear field the grid's central differences and the
+// mesh's point gradients are both the field's gradient, so lit exact agrees
+// on grid and mesh too.
+TEST(MeshExact, LitLinearFieldMatchesLitGridExact) {
+  std::mt19937 rng(13);
+  const GridVolume grid = test::volume_from({6, 5, 7}, linear, {1, 1.5, 0.75}, {-2, 0, 1});
+  const Lighting light{true, 0.2, 0.6, 0.8, 16, "sampled"};
+  for (int per_cell : {5, 6}) {
+    const TetMesh mesh = tetrahedralize(grid, per_cell);
+    const TransferFunction tf = test::random_tf(rng, 4, 0.8);
+    const ExactIntegrator on_grid(grid, tf, 1e-9, light), unlit(grid, tf, 1e-9);
+    const MeshExactIntegrator on_mesh(mesh, tf, 1e-9, light);
+    CameraSpec cs;
+    cs.eye = {9, -7, 12};
+    cs.target = {0.5, 3, 3.5};
+    cs.width = cs.height = 16;
+    const Camera cam(cs);
+    double max_diff = 0, lit_effect = 0;
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x) {
+        const Ray r = cam.ray(x, y);
+        const Rgba a = on_grid.integrate(r), b = on_mesh.integrate(r), u = unlit.integrate(r);
+        for (int c = 0; c < 4; ++c) {
+          max_diff = std::max(max_diff, std::abs(a[c] - b[c]));
+          lit_effect = std::max(lit_effect, std::abs(a[c] - u[c]));
+        }
+      }
+    EXPECT_GT(lit_effect, 0.05) << "the lighting must show";
+    EXPECT_LT(max_diff, 1e-5) << "per_cell " << per_cell;
+  }
+}
+
+double wave(double x, double y, double z) { return 0.5 + 0.4 * std::sin(0.9 * x + 0.5 * y) * std::cos(0.7 * z); }
+
+TEST(MeshExact, LitHonoursItsToleranceAndIsThreadIndependent) {
+  // A curved field: the normal turns inside each tetrahedron and N.d changes sign.
+  const TetMesh m = test::carved_mesh(6, wave, [](double x, double y, double) { return x < 2 || y > 3; });
+  const TransferFunction tf({{0, 0, 0, 1, 0}, {0.3, 0, 1, 0, 0.2}, {0.6, 1, 1, 0, 1.2}, {1, 1, 0, 0, 0.4}});
+  const Lighting light{true, 0.3, 0.7, 0.4, 32, "sampled"};
+  const MeshExactIntegrator ex(m, tf, 1e-5, light), tight(m, tf, 1e-10, light);
+  CameraSpec cs;
+  cs.eye = {-6, -5, 9};
+  cs.target = {2.5, 2.5, 2.5};
+  cs.width = 21;
+  cs.height = 19;
+  const Camera cam(cs);
+  const Image one = render(cam, ex, {.threads = 1}), ref = render(cam, tight, {.threads = 2});
+  double max_diff = 0;
+  for (int y = 0; y < 19; ++y)
+    for (int x = 0; x < 21; ++x)
+      for (int c = 0; c < 4; ++c) max_diff = std::max(max_diff, double(std::abs(one.pixel(x, y)[c] - ref.pixel(x, y)[c])));
+  EXPECT_LT(max_diff, 1e-5 + 1e-6);  // + float storage
+  const Image two = render(cam, ex, {.threads = 2, .tile_size = 5});
+  ASSERT_EQ(0, std::memcmp(one.data().data(), two.data().data(), one.data().size() * sizeof(float)));
+}
+
 TEST(MeshExact, RefusesBadTolerance) {
   const TetMesh m = test::unit_tet();
   const TransferFunction tf({{0, 1, 1, 1, 1}});
