@@ -18,6 +18,12 @@ GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& vol
   params.validate();
   if (lighting.enabled) shader_.emplace(lighting, volume);
   hmax_ = params.hmax * volume.voxel_unit();
+  // Lit: where the gradient nearly vanishes the normal swings and the
+  // specular term |N.d|^p spikes over a fraction of a voxel; a first try
+  // longer than that can put all five samples beside the spike, which the
+  // estimate then cannot see. A quarter voxel restored the bound on
+  // Marschner-Lobb (docs/ADAPTIVE.md, Lighting).
+  if (shader_) hmax_ = std::min(hmax_, 0.25 * volume.voxel_unit());
   hfloor_ = 1e-4 * volume.voxel_unit();
   splitter_ = std::make_unique<TfPieceSplitter>(tf);
 }

@@ -194,9 +194,7 @@ TEST(AdaptiveSimpson, LitMatchesLitExact) {
     double lit_effect = 0;
     for (const Ray& r : ml_rays) {
       const Rgba e = exact.integrate(r);
-      // Known gap: lit, the bound held to 1.6 tol on these rays (3 of 128
-      // above tol), not to tol as unlit; see docs/ADAPTIVE.md, Lighting.
-      EXPECT_LE(max_diff(guaranteed.integrate(r), e), 2 * tol) << light.shininess;
+      EXPECT_LE(max_diff(guaranteed.integrate(r), e), tol) << light.shininess;
       lit_effect = std::max(lit_effect, max_diff(e, unlit.integrate(r)));
     }
     EXPECT_GT(lit_effect, 0.05);  // the lighting is really there

@@ -22,8 +22,9 @@
 //    the ray stops when T < 0.1 tol, which drops at most 0.1 tol.
 // Lit (SPEC §5): samples carry c_lit, with the gradient as the cell's three
 // cubics along the ray; pieces are also cut where N.d changes sign (kink of
-// |N.d|), and the optical-depth share and the stop are divided by the
-// brightest lit colour, ka + kd + ks (when above 1).
+// |N.d|), the optical-depth share and the stop are divided by the
+// brightest lit colour, ka + kd + ks (when above 1), and steps are at most a
+// quarter voxel (the specular spike near a vanishing gradient is narrow).
 // Samples come from the cell's cubic and the piece's linear transfer-function
 // segment, so an evaluation costs a few multiplications.
 #include <memory>
