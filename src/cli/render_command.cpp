@@ -94,7 +94,6 @@ int run_render(const RenderArgs& args) {
   std::unique_ptr<SlabTable> table;
   std::optional<CylindricalTable> cylinder;
   if (projected) {
-    if (scene.lighting.enabled) throw Error("lighting is not implemented for tetrahedral meshes");
     table = make_slab_table(scene.method, scene.mesh(), scene.transfer_function);
     if (name == "pt-cylindrical")
       cylinder.emplace(*table, scene.transfer_function, scene.method.table_size,
@@ -120,8 +119,8 @@ int run_render(const RenderArgs& args) {
   }
   const auto start = std::chrono::steady_clock::now();
   const RenderOptions options{.threads = args.threads};
-  const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options)
-                      : projected ? render_projected(camera, scene.mesh(), *table, options)
+  const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options, scene.lighting)
+                      : projected ? render_projected(camera, scene.mesh(), *table, options, scene.lighting)
                                   : render(camera, *integrator, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Image estimate;

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "cubic.hpp"
-#include "simpson5.hpp"
+#include "simpson_colour_step.hpp"
 #include "tf_pieces.hpp"
 #include "vri/volume/cell_traversal.hpp"
 
@@ -12,10 +12,18 @@ namespace vri {
 
 GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& volume,
                                                            const TransferFunction& tf,
-                                                           const AdaptiveParams& params)
+                                                           const AdaptiveParams& params,
+                                                           const Lighting& lighting)
     : volume_(volume), tolerance_(params.tolerance) {
   params.validate();
+  if (lighting.enabled) shader_.emplace(lighting, volume);
   hmax_ = params.hmax * volume.voxel_unit();
+  // Lit: where the gradient nearly vanishes the normal swings and the
+  // specular term |N.d|^p spikes over a fraction of a voxel; a first try
+  // longer than that can put all five samples beside the spike, which the
+  // estimate then cannot see. A quarter voxel restored the bound on
+  // Marschner-Lobb (docs/ADAPTIVE.md, Lighting).
+  if (shader_) hmax_ = std::min(hmax_, 0.25 * volume.voxel_unit());
   hfloor_ = 1e-4 * volume.voxel_unit();
   splitter_ = std::make_unique<TfPieceSplitter>(tf);
 }
@@ -26,11 +34,16 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
   const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const double colour_density = 0.45 * tolerance_ / iv->length();
-  const double depth_density = colour_density;
-  const double cutoff = 0.1 * tolerance_;
+  // Lit colours reach max_brightness: what an optical-depth error or the
+  // early stop can change behind T is T times that, not T.
+  const double brightest = std::max(1.0, shader_ ? shader_->max_brightness() : 1.0);
+  const double depth_density = colour_density / brightest;
+  const double cutoff = 0.1 * tolerance_ / brightest;
   double T = 1;
   Rgba C{0, 0, 0, 0};
 
+  // Lit: the gradient along the current cell, three cubics in t from the cell entry.
+  Cubic grad[3];
   // One smooth piece [x, y] (t from the cell entry) on transfer-function segment `seg`.
   auto integrate_piece = [&](const Cubic& s, const TfSegment& seg, double ta, double x, double y) {
     // The samples of the current try and where they were taken: a half step
@@ -47,28 +60,17 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
         if (known[k] && at[k] == p) continue;
         ++stats.evaluations;
         f[k] = seg.at(s(p));
+        if (shader_) {
+          const auto lt = shader_->terms({grad[0](p), grad[1](p), grad[2](p)}, ray.dir);
+          f[k] = simpson5::lit(f[k], lt.a, lt.b);
+        }
         at[k] = p;
         known[k] = true;
       }
-      double tau[5], depth[5], g[4][5];
-      for (int k = 0; k < 5; ++k) tau[k] = f[k].tau;
-      simpson5::cumulative(tau, h, depth);
-      for (int k = 0; k < 5; ++k) {
-        const double w = f[k].tau * T * std::exp(-depth[k]);
-        g[0][k] = f[k].r * w;
-        g[1][k] = f[k].g * w;
-        g[2][k] = f[k].b * w;
-        g[3][k] = w;
-      }
-      double S[4], D[4], err = 0;
-      for (int c = 0; c < 4; ++c) {
-        S[c] = simpson5::whole(g[c], h);
-        D[c] = simpson5::halves(g[c], h);
-        err = std::max(err, simpson5::error(D[c], S[c]));
-      }
+      const auto st = simpson5::colour_step(f, T, h);
       const double depth_err =
-          T * simpson5::error(simpson5::halves(tau, h), simpson5::whole(tau, h));
-      const bool ok = (err <= colour_density * h && depth_err <= depth_density * h) || h <= hfloor_;
+          T * simpson5::error(simpson5::halves(st.tau, h), simpson5::whole(st.tau, h));
+      const bool ok = (st.err <= colour_density * h && depth_err <= depth_density * h) || h <= hfloor_;
       if (!ok) {
         f[4] = f[2], at[4] = at[2];
         f[2] = f[1], at[2] = at[1];
@@ -77,10 +79,10 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
         continue;
       }
       for (int c = 0; c < 4; ++c) {
-        C[c] += simpson5::corrected(D[c], S[c]);
-        stats.error_estimate[c] += simpson5::error(D[c], S[c]) + depth_err;
+        C[c] += simpson5::corrected(st.D[c], st.S[c]);
+        stats.error_estimate[c] += simpson5::error(st.D[c], st.S[c]) + depth_err;
       }
-      T *= std::exp(-depth[4]);
+      T *= std::exp(-st.depth[4]);
       if (stats.record_steps) stats.steps.push_back({true, ta + u, h, C[3]});
       ctl.succeeded(hmax_);
       f[0] = f[4], at[0] = at[4];
@@ -91,7 +93,16 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
 
   for_each_cell_segment(volume_, ray, *iv, [&](const CellSegment& cs) {
     const Cubic s = trilinear_along(volume_, cs);
+    // Lit: |N.d| has a kink where N.d changes sign; pieces are cut there too.
+    double kinks[3];
+    int nkinks = 0;
+    if (shader_) nkinks = gradient_along(shader_->gradients(), cs, ray.dir, grad, kinks);
     splitter_->split(s, cs.tb - cs.ta, [&](double x, double y, const TfSegment& seg) {
+      for (int k = 0; k < nkinks; ++k)
+        if (kinks[k] > x && kinks[k] < y) {
+          integrate_piece(s, seg, cs.ta, x, kinks[k]);
+          x = kinks[k];
+        }
       integrate_piece(s, seg, cs.ta, x, y);
     });
     return T > cutoff;

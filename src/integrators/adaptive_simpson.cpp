@@ -3,16 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
-#include "simpson5.hpp"
+#include "simpson_colour_step.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri {
 
 AdaptiveSimpsonIntegrator::AdaptiveSimpsonIntegrator(const GridVolume& volume,
                                                      const TransferFunction& tf,
-                                                     const AdaptiveParams& params)
+                                                     const AdaptiveParams& params,
+                                                     const Lighting& lighting)
     : volume_(volume), tf_(tf), tolerance_(params.tolerance) {
   params.validate();
+  if (lighting.enabled) shader_.emplace(lighting, volume);
   if (params.strategy == AdaptiveStrategy::Guaranteed)
     throw Error("adaptive: AdaptiveSimpsonIntegrator implements coupled and decoupled only");
   const double vu = volume.voxel_unit();
@@ -55,7 +57,11 @@ Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const
   SampleCache cache;
   auto eval = [&](double t) {
     ++stats.evaluations;
-    return tf_(volume_.sample(ray.at(t)));
+    const Vec3 p = ray.at(t);
+    const TfSample v = tf_(volume_.sample(p));
+    if (!shader_) return v;
+    const auto lt = shader_->at(p, ray.dir);
+    return simpson5::lit(v, lt.a, lt.b);
   };
   TfSample f[5];
   auto sample_step = [&](double t, double h) {
@@ -79,24 +85,8 @@ Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const
     for (double u = a; u < b;) {
       const double h = std::min(outer.h, b - u);
       sample_step(u, h);
-      double tau[5], depth[5];
-      for (int k = 0; k < 5; ++k) tau[k] = f[k].tau;
-      simpson5::cumulative(tau, h, depth);
-      double g[4][5];
-      for (int k = 0; k < 5; ++k) {
-        const double w = f[k].tau * T * std::exp(-depth[k]);
-        g[0][k] = f[k].r * w;
-        g[1][k] = f[k].g * w;
-        g[2][k] = f[k].b * w;
-        g[3][k] = w;
-      }
-      double S[4], D[4], err = 0;
-      for (int c = 0; c < 4; ++c) {
-        S[c] = simpson5::whole(g[c], h);
-        D[c] = simpson5::halves(g[c], h);
-        err = std::max(err, simpson5::error(D[c], S[c]));
-      }
-      if (!accepted(err, h)) {
+      const auto st = simpson5::colour_step(f, T, h);
+      if (!accepted(st.err, h)) {
         outer.failed(h, hmin_);
         continue;
       }
@@ -104,10 +94,10 @@ Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const
       tau_integrals(h, tau_s, tau_d);
       const double depth_err = T * simpson5::error(tau_d, tau_s);
       for (int c = 0; c < 4; ++c) {
-        C[c] += simpson5::corrected(D[c], S[c]);
-        stats.error_estimate[c] += simpson5::error(D[c], S[c]) + depth_err;
+        C[c] += simpson5::corrected(st.D[c], st.S[c]);
+        stats.error_estimate[c] += simpson5::error(st.D[c], st.S[c]) + depth_err;
       }
-      T *= std::exp(-depth[4]);
+      T *= std::exp(-st.depth[4]);
       if (stats.record_steps) stats.steps.push_back({true, u, h, C[3]});
       outer.succeeded(hmax_);
       u = h >= b - u ? b : u + h;

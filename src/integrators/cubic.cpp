@@ -103,4 +103,10 @@ Cubic trilinear_along(const std::array<double, 8>& v, const CellSegment& seg) {
   return s;
 }
 
+int gradient_along(const GradientField& gradients, const CellSegment& seg, Vec3 dir, Cubic (&grad)[3],
+                   double (&kinks)[3]) {
+  for (int a = 0; a < 3; ++a) grad[a] = trilinear_along(gradients.cell_corners(a, seg.cell), seg);
+  return sign_changes(combine(1.0, combine(dir.x, grad[0], dir.y, grad[1]), dir.z, grad[2]), seg.tb - seg.ta, kinks);
+}
+
 }  // namespace vri

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <utility>
 
+#include "vri/core/vec3.hpp"
 #include "vri/volume/cell_traversal.hpp"
+#include "vri/volume/gradient_field.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri {
@@ -15,6 +17,8 @@ struct Cubic {
   std::array<double, 4> c{};
   double operator()(double t) const { return ((c[3] * t + c[2]) * t + c[1]) * t + c[0]; }
   double derivative(double t) const { return (3 * c[3] * t + 2 * c[2]) * t + c[1]; }
+  // The line from v0 at t = 0 to v1 at t = len (constant v0 when len is 0).
+  static Cubic linear(double v0, double v1, double len) { return {{v0, len > 0 ? (v1 - v0) / len : 0, 0, 0}}; }
 
   // Critical points strictly inside (0, len), ascending; returns how many (0..2).
   int critical_points(double len, double out[2]) const;
@@ -39,5 +43,11 @@ Cubic combine(double a, const Cubic& p, double b, const Cubic& q);
 // The roots of the cubic strictly inside (0, len) where it changes sign,
 // ascending; returns how many (0..3).
 int sign_changes(const Cubic& s, double len, double out[3]);
+
+// Lighting along a cell segment: the gradient as three cubics (grad) and the
+// roots of N.dir inside (0, len), where |N.dir| has a kink (kinks, ascending);
+// returns how many kinks (0..3).
+int gradient_along(const GradientField& gradients, const CellSegment& seg, Vec3 dir, Cubic (&grad)[3],
+                   double (&kinks)[3]);
 
 }  // namespace vri

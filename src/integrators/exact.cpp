@@ -42,10 +42,7 @@ void ExactIntegrator::integrate_cell(const CellSegment& cs, Vec3 dir, double err
   Cubic grad[3];
   double kinks[3];
   int nkinks = 0;
-  if (shader_) {
-    for (int a = 0; a < 3; ++a) grad[a] = trilinear_along(shader_->gradients().cell_corners(a, cs.cell), cs);
-    nkinks = sign_changes(combine(1.0, combine(dir.x, grad[0], dir.y, grad[1]), dir.z, grad[2]), len, kinks);
-  }
+  if (shader_) nkinks = gradient_along(shader_->gradients(), cs, dir, grad, kinks);
 
   const PieceIntegrator::Lit lit{shader_ ? &*shader_ : nullptr, grad, dir, kinks, nkinks};
   pieces_.integrate(s, len, error_per_length, acc, shader_ ? &lit : nullptr);

@@ -45,12 +45,11 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
                                             const TransferFunction& tf, const Lighting& lighting) {
   if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step, lighting);
   if (spec.name == "adaptive") {
-    if (lighting.enabled) throw Error("method 'adaptive' does not support lighting yet");
     const AdaptiveParams p{spec.tolerance, spec.h0, spec.hmin, spec.hmax,
                            parse_adaptive_strategy(spec.strategy)};
     if (p.strategy == AdaptiveStrategy::Guaranteed)
-      return std::make_unique<GuaranteedAdaptiveIntegrator>(volume, tf, p);
-    return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p);
+      return std::make_unique<GuaranteedAdaptiveIntegrator>(volume, tf, p, lighting);
+    return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p, lighting);
   }
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
   if (spec.name == "preint1")
@@ -63,9 +62,9 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
 
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
                                             const TransferFunction& tf, const Lighting& lighting) {
-  if (lighting.enabled) throw Error("lighting is not implemented for tetrahedral meshes");
-  if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance);
-  if (spec.name == "tet-raycast") return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf));
+  if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance, lighting);
+  if (spec.name == "tet-raycast")
+    return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf), lighting);
   if (spec.name == "pt" || spec.name == "pt-cylindrical")
     throw Error("method '" + spec.name + "' projects whole tetrahedra; it has no per-ray integrator");
   if (!is_mesh_method(spec.name) && is_known(spec.name))

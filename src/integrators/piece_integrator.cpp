@@ -32,11 +32,8 @@ PieceIntegrator::PieceIntegrator(const TransferFunction& tf) : splitter_(std::ma
 PieceIntegrator::~PieceIntegrator() = default;
 
 void PieceIntegrator::integrate_linear(double s_front, double s_back, double len, double error_per_length,
-                                       Accumulator& acc) const {
-  Cubic s;
-  s.c[0] = s_front;
-  s.c[1] = len > 0 ? (s_back - s_front) / len : 0;
-  integrate(s, len, error_per_length, acc);
+                                       Accumulator& acc, const Lit* lit) const {
+  integrate(Cubic::linear(s_front, s_back, len), len, error_per_length, acc, lit);
 }
 
 void PieceIntegrator::integrate(const Cubic& s, double len, double error_per_length, Accumulator& acc,

@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "vri/core/error.hpp"
 #include "vri/projected/classify.hpp"
+#include "vri/shading/chord_lighting.hpp"
 #include "vri/tables/cylindrical_table.hpp"
 
 namespace vri {
@@ -59,10 +61,11 @@ bool owns(Point2 a, Point2 b, double sign) {
 class TileRaster {
  public:
   // Exactly one of slab and cylinder is given.
+  // lighting: null when unlit.
   TileRaster(const Camera& cam, const TetMesh& mesh, const SlabTable* slab, const CylindricalTable* cylinder,
-             const std::vector<Screen>& screen, Vec3 view, bool perspective)
+             const std::vector<Screen>& screen, Vec3 view, bool perspective, const ChordLighting* lighting)
       : cam_(cam), mesh_(mesh), slab_(slab), cylinder_(cylinder), screen_(screen), view_(view),
-        perspective_(perspective) {}
+        perspective_(perspective), lighting_(lighting) {}
 
   void draw(std::int32_t tet, int x0, int y0, int x1, int y1, std::vector<Fragment>& out) const {
     const auto& v = mesh_.tets()[tet];
@@ -162,8 +165,10 @@ class TileRaster {
                                    a.front, b.front, c.front, a.s_front, b.s_front, c.s_front, sf);
         const Vec3 k = interpolate(la / weight_of(a.d_back), lb / weight_of(b.d_back), lc / weight_of(c.d_back),
                                    a.back, b.back, c.back, a.s_back, b.s_back, c.s_back, sbk);
-        const Rgba v = cylinder_ ? cylinder_->lookup(alpha, length(k - f), sf, sbk) : slab_->lookup(length(k - f), sf, sbk);
+        const double l = length(k - f);
+        Rgba v = cylinder_ ? cylinder_->lookup(alpha, l, sf, sbk) : slab_->lookup(l, sf, sbk);
         if (v[3] == 0 && v[0] == 0 && v[1] == 0 && v[2] == 0) continue;
+        if (lighting_ && l > 0) v = lighting_->apply(v, tet, f, k, (k - f) * (1 / l));
         out.push_back({y * W + x, tet, depth(f), {float(v[0]), float(v[1]), float(v[2]), float(v[3])}});
       }
   }
@@ -175,14 +180,17 @@ class TileRaster {
   const std::vector<Screen>& screen_;
   Vec3 view_;
   bool perspective_;
+  const ChordLighting* lighting_;
 };
 
 Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, const SlabTable* slab,
-                        const CylindricalTable* cylinder, const RenderOptions& options) {
+                        const CylindricalTable* cylinder, const RenderOptions& options, const Lighting& lighting) {
   if (options.threads < 0) throw Error("thread count must be >= 0");
   if (options.tile_size <= 0) throw Error("tile size must be positive");
   if ((slab ? slab->max_length() : cylinder->max_length()) < mesh.max_edge_length())
     throw Error("pt: the table must cover segments up to the longest edge of the mesh");
+  std::optional<ChordLighting> lit;
+  if (lighting.enabled) lit.emplace(mesh, lighting, slab ? "pt" : "pt-cylindrical");
   const CameraSpec& cs = camera.spec();
   const Vec3 view = normalize(cs.target - cs.eye);
   const bool perspective = cs.projection == Projection::Perspective;
@@ -220,7 +228,7 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, const SlabTab
       for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx) bins[std::size_t(ty) * tiles_x + tx].push_back(std::int32_t(t));
     }
-    const TileRaster raster(camera, mesh, slab, cylinder, screen, view, perspective);
+    const TileRaster raster(camera, mesh, slab, cylinder, screen, view, perspective, lit ? &*lit : nullptr);
     tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const tbb::blocked_range<int>& r) {
       std::vector<Fragment> frags, by_pixel;
       std::vector<std::size_t> start;
@@ -261,13 +269,13 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, const SlabTab
 }  // namespace
 
 Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTable& table,
-                       const RenderOptions& options) {
-  return render_tetrahedra(camera, mesh, &table, nullptr, options);
+                       const RenderOptions& options, const Lighting& lighting) {
+  return render_tetrahedra(camera, mesh, &table, nullptr, options, lighting);
 }
 
 Image render_projected(const Camera& camera, const TetMesh& mesh, const CylindricalTable& table,
-                       const RenderOptions& options) {
-  return render_tetrahedra(camera, mesh, nullptr, &table, options);
+                       const RenderOptions& options, const Lighting& lighting) {
+  return render_tetrahedra(camera, mesh, nullptr, &table, options, lighting);
 }
 
 }  // namespace vri

@@ -7,9 +7,12 @@
 namespace vri {
 
 HeadlightShader::HeadlightShader(const Lighting& l, const GridVolume& volume)
-    : ka_(l.ambient), kd_(l.diffuse), ks_(l.specular), p_(l.shininess),
-      flat_(1e-6 * (double(volume.max_value()) - volume.min_value()) / volume.voxel_unit()),
-      gradients_(volume) {
+    : HeadlightShader(l, 1e-6 * (double(volume.max_value()) - volume.min_value()) / volume.voxel_unit()) {
+  gradients_.emplace(volume);
+}
+
+HeadlightShader::HeadlightShader(const Lighting& l, double flat_threshold)
+    : ka_(l.ambient), kd_(l.diffuse), ks_(l.specular), p_(l.shininess), flat_(flat_threshold) {
   for (double v : {ka_, kd_, ks_, p_})
     if (!(v >= 0) || !std::isfinite(v))
       throw Error("lighting coefficients and shininess must be finite and >= 0");

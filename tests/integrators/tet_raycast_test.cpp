@@ -17,10 +17,11 @@ namespace {
 double wave(double x, double y, double z) { return 0.5 + 0.4 * std::sin(0.9 * x + 0.5 * y) * std::cos(0.7 * z); }
 
 // Max over channels and pixels of |tet-raycast - exact| on a small view.
-double max_error(const TetMesh& mesh, const TransferFunction& tf, int size, int lengths, CameraSpec cs) {
-  const MeshExactIntegrator exact(mesh, tf, 1e-8);
+double max_error(const TetMesh& mesh, const TransferFunction& tf, int size, int lengths, CameraSpec cs,
+                 const Lighting& light = {}) {
+  const MeshExactIntegrator exact(mesh, tf, 1e-8, light);
   const TetRaycastIntegrator raycast(
-      mesh, test::length_table_ptr(tf, size, lengths, mesh.max_edge_length()));
+      mesh, test::length_table_ptr(tf, size, lengths, mesh.max_edge_length()), light);
   cs.width = cs.height = 32;
   const Camera cam(cs);
   double err = 0, alpha = 0;
@@ -52,6 +53,24 @@ TEST(TetRaycast, ConvergesToExactOnANonConvexMesh) {
   const double fine = max_error(mesh, tf(), 128, 32, cs);
   EXPECT_LT(fine, 0.01);
   EXPECT_LT(fine, 0.5 * coarse);  // the table's resolution is what limits it
+}
+
+double linear(double x, double y, double z) { return 0.1 * x + 0.08 * y - 0.05 * z + 0.4; }
+
+TEST(TetRaycast, LitConvergesToLitExact) {
+  // On a linear field the normal is constant, so one normal per chord
+  // (`sampled`) is exact and only the table limits the error (a curved
+  // field: ProjectedTetrahedra.LitMatchesLitRaycast).
+  const auto keep = [](double x, double y, double z) { return !(x > 2 && x < 4 && y > 2 && y < 4) && !(z > 4 && y < 2); };
+  const Lighting light{true, 0.3, 0.7, 0.4, 32, "sampled"};
+  CameraSpec cs;
+  cs.eye = {14, -9, 11};
+  cs.target = {3, 3, 3};
+  const TetMesh flat = test::carved_mesh(7, linear, keep);
+  const double coarse = max_error(flat, tf(), 16, 4, cs, light);
+  const double fine = max_error(flat, tf(), 64, 16, cs, light);
+  EXPECT_LT(fine, 0.01);
+  EXPECT_LT(fine, 0.5 * coarse);
 }
 
 TEST(TetRaycast, MatchesExactOnTheBundledMesh) {

@@ -28,13 +28,13 @@ struct Errors {
 
 // pt against tet-raycast with the same table (the same segments, so they
 // agree to rounding) and against exact (the table's own error).
-Errors compare(const TetMesh& mesh, const TransferFunction& t, CameraSpec cs) {
+Errors compare(const TetMesh& mesh, const TransferFunction& t, CameraSpec cs, const Lighting& light = {}) {
   cs.width = cs.height = 40;
   const Camera cam(cs);
   auto table = test::length_table_ptr(t, 64, 16, mesh.max_edge_length());
-  const Image pt = render_projected(cam, mesh, *table, {.threads = 2});
-  const TetRaycastIntegrator raycast(mesh, std::move(table));
-  const MeshExactIntegrator exact(mesh, t, 1e-8);
+  const Image pt = render_projected(cam, mesh, *table, {.threads = 2}, light);
+  const TetRaycastIntegrator raycast(mesh, std::move(table), light);
+  const MeshExactIntegrator exact(mesh, t, 1e-8, light);
   Errors e;
   for (int y = 0; y < 40; ++y)
     for (int x = 0; x < 40; ++x) {
@@ -68,6 +68,24 @@ TEST(ProjectedTetrahedra, MatchesRaycastOnAConvexMesh) {
     EXPECT_LT(e.vs_raycast, 1e-5) << "ortho " << ortho;
     EXPECT_LT(e.vs_exact, 0.02) << "ortho " << ortho;
   }
+}
+
+TEST(ProjectedTetrahedra, LitMatchesLitRaycast) {
+  // The same chords lit with the same normal (`sampled`): pt agrees with
+  // tet-raycast to rounding, and with lit exact to the table's and the
+  // one-normal-per-chord error.
+  const TetMesh mesh = tetrahedralize(test::volume_from({6, 6, 6}, wave), 5);
+  const Lighting light{true, 0.3, 0.7, 0.4, 32, "sampled"};
+  const Errors e = compare(mesh, tf(), view({13, -8, 10}, {2.5, 2.5, 2.5}, false), light);
+  EXPECT_GT(e.alpha, 100);
+  EXPECT_LT(e.vs_raycast, 1e-5);
+  EXPECT_LT(e.vs_exact, 0.05);
+  auto table = test::length_table_ptr(tf(), 8, 4, mesh.max_edge_length());
+  CameraSpec cs = view({13, -8, 10}, {2.5, 2.5, 2.5}, false);
+  cs.width = cs.height = 8;
+  Lighting interpolated = light;
+  interpolated.mode = "interpolated";
+  EXPECT_THROW(render_projected(Camera(cs), mesh, *table, {}, interpolated), Error);
 }
 
 TEST(ProjectedTetrahedra, MatchesRaycastOnANonConvexMesh) {

@@ -60,8 +60,10 @@ TEST(MeshScene, RefusesMismatchedMethodsAndKeys) {
   expect_refused([] { scene(R"({"builtin": "tetrahedralized"})"); }, "needs a 'grid'");
   Lighting lit;
   lit.enabled = true;
-  expect_refused([&] { make_integrator(mesh.method, mesh.mesh(), mesh.transfer_function, lit); },
-                 "lighting is not implemented for tetrahedral meshes");
+  lit.mode = "interpolated";
+  const Scene raycast = scene(R"({"file": "../data/tetra_mesh_small_ascii.vtk"})", "tet-raycast");
+  expect_refused([&] { make_integrator(raycast.method, raycast.mesh(), raycast.transfer_function, lit); },
+                 "tet-raycast: lighting mode 'interpolated' is not supported on tetrahedral meshes; use 'sampled'");
   expect_refused([] { scene(R"({"builtin": "tetrahedralized", "tets_per_cell": 4, "grid": {"builtin": "sphere"}})"); },
                  "5 or 6");
 }

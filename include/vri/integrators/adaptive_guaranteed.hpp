@@ -20,12 +20,19 @@
 //    0.45 tol h / L in colour and by 0.45 tol h / (L T) in optical depth (an
 //    optical-depth error d changes everything behind it, at most T, by d);
 //    the ray stops when T < 0.1 tol, which drops at most 0.1 tol.
+// Lit (SPEC §5): samples carry c_lit, with the gradient as the cell's three
+// cubics along the ray; pieces are also cut where N.d changes sign (kink of
+// |N.d|), the optical-depth share and the stop are divided by the
+// brightest lit colour, ka + kd + ks (when above 1), and steps are at most a
+// quarter voxel (the specular spike near a vanishing gradient is narrow).
 // Samples come from the cell's cubic and the piece's linear transfer-function
 // segment, so an evaluation costs a few multiplications.
 #include <memory>
+#include <optional>
 
 #include "vri/integrators/adaptive_params.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
+#include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -37,7 +44,7 @@ class GuaranteedAdaptiveIntegrator final : public ErrorEstimatingIntegrator {
  public:
   // Throws vri::Error for bad parameters (params.strategy is not consulted).
   GuaranteedAdaptiveIntegrator(const GridVolume& volume, const TransferFunction& tf,
-                               const AdaptiveParams& params);
+                               const AdaptiveParams& params, const Lighting& lighting = {});
   ~GuaranteedAdaptiveIntegrator() override;
   using ErrorEstimatingIntegrator::integrate;
   Rgba integrate(const Ray& ray, RayStats& stats) const override;
@@ -48,6 +55,7 @@ class GuaranteedAdaptiveIntegrator final : public ErrorEstimatingIntegrator {
   double tolerance_;
   double hmax_, hfloor_;  // world units
   std::unique_ptr<const TfPieceSplitter> splitter_;
+  std::optional<HeadlightShader> shader_;
 };
 
 }  // namespace vri

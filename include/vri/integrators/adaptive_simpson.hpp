@@ -22,8 +22,13 @@
 //    integral) skips the outer integral.
 // Evaluations shared by adjacent steps and by halves are reused. Double
 // precision throughout; no early ray termination (the paper has none).
+// Lit (SPEC §5): every sample's colour is c_lit, so the error control applies
+// to the lit integrand.
+#include <optional>
+
 #include "vri/integrators/adaptive_params.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
+#include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -33,7 +38,7 @@ class AdaptiveSimpsonIntegrator final : public ErrorEstimatingIntegrator {
  public:
   // Throws vri::Error for bad parameters or a strategy other than coupled/decoupled.
   AdaptiveSimpsonIntegrator(const GridVolume& volume, const TransferFunction& tf,
-                            const AdaptiveParams& params);
+                            const AdaptiveParams& params, const Lighting& lighting = {});
   using ErrorEstimatingIntegrator::integrate;
   Rgba integrate(const Ray& ray, RayStats& stats) const override;
   std::string_view name() const override { return "adaptive"; }
@@ -44,6 +49,7 @@ class AdaptiveSimpsonIntegrator final : public ErrorEstimatingIntegrator {
   double tolerance_;
   double h0_, hmin_, hmax_;  // world units
   bool coupled_;
+  std::optional<HeadlightShader> shader_;
 };
 
 }  // namespace vri

@@ -5,17 +5,26 @@
 // by the same PieceIntegrator as the grid `exact` (split at control points,
 // closed-form optical depth, adaptive Gauss-Kronrod colour), with an absolute
 // colour budget of tolerance spread over the ray's length in the mesh's box.
-// The ray stops once the transmittance falls below tolerance/10.
+// The ray stops once the transmittance falls below tolerance/10 (divided by
+// the brightest lit colour when lit).
+// Lit (SPEC §5): the point gradients (PointGradients) are linear along the
+// piece, so PieceIntegrator evaluates c_lit continuously and cuts the piece
+// where N.d changes sign, as on grids.
+#include <optional>
+
 #include "vri/integrators/integrator.hpp"
 #include "vri/integrators/piece_integrator.hpp"
+#include "vri/mesh/point_gradients.hpp"
 #include "vri/mesh/tet_walk.hpp"
+#include "vri/shading/headlight_shader.hpp"
 
 namespace vri {
 
 class MeshExactIntegrator final : public Integrator {
  public:
   // tolerance: absolute error bound per channel; throws unless 1e-12 <= tolerance <= 0.1.
-  MeshExactIntegrator(const TetMesh& mesh, const TransferFunction& tf, double tolerance);
+  MeshExactIntegrator(const TetMesh& mesh, const TransferFunction& tf, double tolerance,
+                      const Lighting& lighting = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "exact"; }
 
@@ -23,6 +32,8 @@ class MeshExactIntegrator final : public Integrator {
   TetWalk walk_;
   PieceIntegrator pieces_;
   double tolerance_;
+  std::optional<PointGradients> gradients_;
+  std::optional<HeadlightShader> shader_;
 };
 
 }  // namespace vri

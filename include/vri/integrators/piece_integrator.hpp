@@ -43,9 +43,9 @@ class PieceIntegrator {
   // Integrates s(t), t in [0, len], into acc; unlit when lit is null.
   void integrate(const Cubic& s, double len, double error_per_length, Accumulator& acc,
                  const Lit* lit = nullptr) const;
-  // The linear, unlit case: s goes from s_front to s_back over length len.
+  // The linear case: s goes from s_front to s_back over length len.
   void integrate_linear(double s_front, double s_back, double len, double error_per_length,
-                        Accumulator& acc) const;
+                        Accumulator& acc, const Lit* lit = nullptr) const;
 
  private:
   std::unique_ptr<const TfPieceSplitter> splitter_;

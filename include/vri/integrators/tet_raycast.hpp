@@ -4,10 +4,13 @@
 // (l, s_f, s_b) table instead of integrated (Roettger & Ertl 2002, Sec. 3:
 // the segment inside a tetrahedron is fully described by s_f, s_b and l), and
 // composited front to back: C += T C_seg, T *= 1 - alpha_seg.
+// Lit: each piece's colour is lit with one normal (ChordLighting, mode `sampled`).
 #include <memory>
+#include <optional>
 
 #include "vri/integrators/integrator.hpp"
 #include "vri/mesh/tet_walk.hpp"
+#include "vri/shading/chord_lighting.hpp"
 #include "vri/tables/slab_table.hpp"
 
 namespace vri {
@@ -15,13 +18,14 @@ namespace vri {
 class TetRaycastIntegrator final : public Integrator {
  public:
   // The table must cover segments up to mesh.max_edge_length() (vri::Error otherwise).
-  TetRaycastIntegrator(const TetMesh& mesh, std::unique_ptr<const SlabTable> table);
+  TetRaycastIntegrator(const TetMesh& mesh, std::unique_ptr<const SlabTable> table, const Lighting& lighting = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "tet-raycast"; }
 
  private:
   TetWalk walk_;
   std::unique_ptr<const SlabTable> table_;
+  std::optional<ChordLighting> lighting_;
 };
 
 }  // namespace vri

@@ -21,10 +21,13 @@
 // canonical vertex order, so each pixel centre is covered once per tetrahedron
 // layer. Tetrahedra with a vertex behind the eye (or the orthographic eye
 // plane) are not drawn: keep the eye outside the mesh.
+// Lit (SPEC §5, mode `sampled` only): each fragment's colour is lit with one
+// normal for its chord from front to back point (ChordLighting).
 #include "vri/camera/camera.hpp"
 #include "vri/mesh/tet_mesh.hpp"
 #include "vri/render/image.hpp"
 #include "vri/render/renderer.hpp"
+#include "vri/shading/lighting.hpp"
 #include "vri/tables/cylindrical_table.hpp"
 #include "vri/tables/slab_table.hpp"
 
@@ -32,10 +35,10 @@ namespace vri {
 
 // The table must cover mesh.max_edge_length() (vri::Error otherwise).
 Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTable& table,
-                       const RenderOptions& options = {});
+                       const RenderOptions& options = {}, const Lighting& lighting = {});
 // pt-cylindrical: the same, each tetrahedron read from the two cylinder planes
 // next to its thick vertex's plane (2D lookups, Roettger & Ertl 2002, Sec. 4).
 Image render_projected(const Camera& camera, const TetMesh& mesh, const CylindricalTable& table,
-                       const RenderOptions& options = {});
+                       const RenderOptions& options = {}, const Lighting& lighting = {});
 
 }  // namespace vri

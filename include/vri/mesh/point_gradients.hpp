@@ -1,0 +1,36 @@
+#pragma once
+// PointGradients (SPEC §5 on tetrahedral meshes): the gradient at each point
+// is the volume-weighted average of the constant gradients of the
+// tetrahedra around it; inside a tetrahedron the four point gradients are
+// interpolated linearly (barycentric), so the gradient is linear along a ray
+// through it. Computed once per mesh.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "vri/core/vec3.hpp"
+#include "vri/mesh/tet_mesh.hpp"
+
+namespace vri {
+
+// The constant gradient, on tetrahedron `tet`, of the linear function with
+// values v at its four vertices (in the order of mesh.tets()[tet]).
+Vec3 tet_gradient(const TetMesh& mesh, std::size_t tet, const std::array<double, 4>& v);
+
+class PointGradients {
+ public:
+  // Keeps a reference to mesh. A point in no tetrahedron gets gradient 0.
+  explicit PointGradients(const TetMesh& mesh);
+
+  Vec3 at_point(std::int32_t point) const { return g_[point]; }
+  // The barycentric interpolation of the four point gradients of `tet` at p.
+  Vec3 sample(std::int32_t tet, Vec3 p) const;
+  // SPEC §5's flat threshold on a mesh: 1e-6 (max - min) per unit length.
+  double flat_threshold() const;
+
+ private:
+  const TetMesh& mesh_;
+  std::vector<Vec3> g_;
+};
+
+}  // namespace vri

@@ -1,0 +1,49 @@
+#pragma once
+// One try of the outer integral (I_O of Campagnolo, Celes & de Figueiredo
+// 2015, Algorithm 3) on five equally spaced samples of a step [t, t + h]:
+// r, g, b and alpha of SPEC §4 (c tau T e^{-depth}, with c already lit where
+// lighting is on) by both Simpson estimates, and the optical depth inside the
+// step from the quartic through the tau samples. Shared by the paper's
+// strategies and the guaranteed one.
+#include <algorithm>
+#include <cmath>
+
+#include "simpson5.hpp"
+#include "vri/transfer/transfer_function.hpp"
+
+namespace vri::simpson5 {
+
+// The sample with its chromaticity lit (SPEC §5): c_lit = c a + b.
+inline TfSample lit(TfSample v, double a, double b) {
+  return {v.r * a + b, v.g * a + b, v.b * a + b, v.tau};
+}
+
+struct ColourStep {
+  double tau[5], depth[5];  // tau at the samples; optical depth from t to each
+  double S[4], D[4];        // whole and halves, per channel r, g, b, alpha
+  double err;               // the largest error(D, S) over the channels
+};
+
+// T: transmittance at t.
+inline ColourStep colour_step(const TfSample (&f)[5], double T, double h) {
+  ColourStep st;
+  for (int k = 0; k < 5; ++k) st.tau[k] = f[k].tau;
+  cumulative(st.tau, h, st.depth);
+  double g[4][5];
+  for (int k = 0; k < 5; ++k) {
+    const double w = f[k].tau * T * std::exp(-st.depth[k]);
+    g[0][k] = f[k].r * w;
+    g[1][k] = f[k].g * w;
+    g[2][k] = f[k].b * w;
+    g[3][k] = w;
+  }
+  st.err = 0;
+  for (int c = 0; c < 4; ++c) {
+    st.S[c] = whole(g[c], h);
+    st.D[c] = halves(g[c], h);
+    st.err = std::max(st.err, error(st.D[c], st.S[c]));
+  }
+  return st;
+}
+
+}  // namespace vri::simpson5
