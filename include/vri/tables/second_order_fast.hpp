@@ -1,6 +1,6 @@
 #pragma once
 // FastSecondOrderBuilder: the entries of second_order_table.hpp (El Hajjar et
-// al. 2008, Eq. 4, 6-7) computed many at a time.
+// al. 2008, Eq. 2 and §6.2) computed many at a time.
 //
 // Why it is fast: with m = f + d1 and b = f + d2 the parabola is
 // P(t) = q(t) + f with q(t) = (A t + B) t, A = 2 d2 - 4 d1, B = 4 d1 - d2,

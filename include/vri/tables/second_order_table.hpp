@@ -2,13 +2,13 @@
 // Second-order pre-integration (El Hajjar, Marchesin, Dischler & Mongenet
 // 2008, "Second order pre-integrated volume rendering", PacificVis): the
 // scalar along a slab of length L is the parabola through its front, middle
-// and back samples (their Eq. 4),
+// and back samples (their Eq. 2, which defines the entry),
 //
 //   P(t) = A t^2 + B t + C,  A = 2 s_f - 4 s_m + 2 s_b,  B = -3 s_f + 4 s_m - s_b,
 //   C = s_f,  t in [0, 1],
 //
 // and the table over (s_f, s_m, s_b) holds the slab integral of SPEC §4 along
-// it. As in the paper (Eq. 6-7, their iterative table computation) the slab is
+// it. As in the paper (§6.2: a fixed number of iterations, Horner) the slab is
 // cut into K = `iterations` equal sub-steps of length L/K; sub-step k is the
 // homogeneous segment at the parabola's value at its midpoint
 // t_k = (k + 1/2) / K (evaluated by Horner), composited front to back:
