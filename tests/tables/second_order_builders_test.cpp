@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 
 #include "tables/random_tf.hpp"
 #include "vri/tables/second_order_table.hpp"
@@ -17,18 +18,12 @@ namespace {
 double fast_tolerance(int iterations) { return 1e-6 + 3e-8 * iterations; }
 
 double max_difference(const SecondOrderTable& a, const SecondOrderTable& b) {
-  double m = 0;
-  for (std::size_t k = 0; k < a.bytes() / sizeof(float); ++k)
-    m = std::max(m, double(std::abs(a.data()[k] - b.data()[k])));
-  return m;
+  return std::transform_reduce(
+      a.data(), a.data() + a.bytes() / sizeof(float), b.data(), 0.0, [](double x, double y) { return std::max(x, y); },
+      [](float x, float y) { return double(std::abs(x - y)); });
 }
 
-struct Case {
-  unsigned seed;
-  int n;
-  double length, max_tau;
-  int iterations;
-};
+struct Case { unsigned seed; int n; double length, max_tau; int iterations; };
 
 TEST(FastSecondOrderBuilder, EqualsPlainInEveryEntry) {
   const auto plain = make_second_order_builder("plain"), fast = make_second_order_builder("fast");
