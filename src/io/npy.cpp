@@ -81,7 +81,7 @@ NpyArray read_npy(const std::filesystem::path& path) {
 }
 
 void write_npy(const std::filesystem::path& path, const std::vector<std::size_t>& shape,
-               const std::vector<float>& data) {
+               std::span<const float> data) {
   std::string tuple;
   for (std::size_t i = 0; i < shape.size(); ++i) tuple += (i ? ", " : "") + std::to_string(shape[i]);
   if (shape.size() == 1) tuple += ",";  // a Python 1-tuple

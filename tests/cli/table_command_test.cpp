@@ -37,7 +37,7 @@ TEST(TableCommand, WritesTheSpecShapes) {
 TEST(TableCommand, BadArgumentsFailWithoutOutput) {
   const test::TempDir dir;
   const auto out = dir / "t.npy";
-  for (const std::string args : {"--builder fastest", "--lengths 3", "--size 1", "--order 2", "--length -1",
+  for (const std::string args : {"--builder fastest", "--lengths 3", "--size 1", "--order 3", "--length -1",
                                  "--builder sliced --accumulation 10bit"}) {
     EXPECT_NE(vri_table(args + " -o " + out.string(), dir), 0) << args;
     EXPECT_FALSE(std::filesystem::exists(out)) << args;

@@ -2,6 +2,7 @@
 // NumPy .npy files of float32 (written) and float32/float64 (read), C order.
 #include <cstddef>
 #include <filesystem>
+#include <span>
 #include <vector>
 
 #include "vri/render/image.hpp"
@@ -16,7 +17,7 @@ struct NpyArray {
 // Throws vri::Error for anything but a little-endian float32/float64 C-order array.
 NpyArray read_npy(const std::filesystem::path& path);
 void write_npy(const std::filesystem::path& path, const std::vector<std::size_t>& shape,
-               const std::vector<float>& data);
+               std::span<const float> data);
 // Shape (H, W, 4): the premultiplied (r, g, b, alpha) before any background.
 void write_npy(const std::filesystem::path& path, const Image& image);
 

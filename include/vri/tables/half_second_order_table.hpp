@@ -1,0 +1,38 @@
+#pragma once
+// HalfSecondOrderTable: a SecondOrderTable stored as 16-bit half floats
+// (_Float16, IEEE binary16: 11 significant bits), 8 bytes per entry instead
+// of 16: 128 MiB for 256^3 (float32: 256 MiB). Every stored value is the
+// nearest half to the float32 one, so |half - float| <= 2^-11 |x| + 2^-25
+// (2.4e-4 at most for values in [0, 1]; the measured max and RMS over a
+// 256^3 table are in docs/SECOND_ORDER.md). Lookups are trilinear like
+// SecondOrderTable::lookup.
+#include <cstddef>
+#include <vector>
+
+#include "vri/core/rgba.hpp"
+#include "vri/tables/second_order_table.hpp"
+
+namespace vri {
+
+class HalfSecondOrderTable {
+ public:
+  explicit HalfSecondOrderTable(const SecondOrderTable& table);
+
+  const ScalarAxis& axis() const { return axis_; }
+  int size() const { return axis_.n; }
+  double length() const { return length_; }
+  int iterations() const { return iterations_; }
+  // Entry (f, m, b) widened to double.
+  Rgba entry(int f, int m, int b) const;
+  std::size_t bytes() const { return data_.size() * sizeof(_Float16); }
+
+  Rgba lookup(double s_f, double s_m, double s_b) const;
+
+ private:
+  ScalarAxis axis_;
+  double length_;
+  int iterations_;
+  std::vector<_Float16> data_;
+};
+
+}  // namespace vri
