@@ -1,0 +1,28 @@
+#include "vri/tables/second_order_plain.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include "vri/tables/table_builder.hpp"
+
+namespace vri {
+
+SecondOrderTable PlainSecondOrderBuilder::build(const DiscreteTf& tf, double length, int iterations) const {
+  check_slab_length(length);
+  check_iterations(iterations);
+  SecondOrderTable table(tf.axis(), length, iterations);
+  const int n = tf.size();
+  tbb::parallel_for(0, n, [&](int f) {
+    for (int m = 0; m < n; ++m)
+      for (int b = 0; b < n; ++b) {
+        const SlabRgba v = second_order_entry(tf, f, m, b, length, iterations);
+        float* e = table.entry(f, m, b);
+        e[0] = static_cast<float>(v.r);
+        e[1] = static_cast<float>(v.g);
+        e[2] = static_cast<float>(v.b);
+        e[3] = static_cast<float>(v.a);
+      }
+  });
+  return table;
+}
+
+}  // namespace vri

@@ -1,0 +1,99 @@
+#include "vri/tables/second_order_table.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "tables/trilinear.hpp"
+#include "vri/core/error.hpp"
+#include "vri/tables/second_order_fast.hpp"
+#include "vri/tables/second_order_plain.hpp"
+#include "vri/tables/slab_integral.hpp"
+
+namespace vri {
+
+namespace {
+
+std::size_t cube(std::size_t n) { return n * n * n; }
+
+}  // namespace
+
+SecondOrderTable::SecondOrderTable(const ScalarAxis& axis, double length, int iterations)
+    : axis_(axis), length_(length), iterations_(iterations) {
+  if (cube(axis.n) > kMaxSecondOrderEntries)
+    throw Error("a second-order table of size " + std::to_string(axis.n) + " exceeds " +
+                std::to_string(kMaxSecondOrderEntries) + " entries (1 GiB); use --size <= 406");
+  data_.assign(4 * cube(axis.n), 0.0f);
+}
+
+Rgba SecondOrderTable::lookup(double s_f, double s_m, double s_b) const {
+  return trilinear_rgba(data(), axis_.n, axis_.index(s_f), axis_.index(s_m), axis_.index(s_b));
+}
+
+SlabRgba second_order_entry(const DiscreteTf& tf, double u_f, double u_m, double u_b, double length,
+                            int iterations) {
+  const double A = 2 * u_f - 4 * u_m + 2 * u_b, B = -3 * u_f + 4 * u_m - u_b, C = u_f;
+  const double top = tf.size() - 1, step = length / iterations;
+  SlabRgba acc;
+  for (int k = 0; k < iterations; ++k) {
+    const double t = (k + 0.5) / iterations;
+    const double u = std::clamp((A * t + B) * t + C, 0.0, top);
+    acc = over(acc, homogeneous_slab(tf.at_index(u), step));
+  }
+  return acc;
+}
+
+void check_iterations(int iterations) {
+  if (iterations < 1 || iterations > kMaxSecondOrderIterations)
+    throw Error("--iterations must be in [1, " + std::to_string(kMaxSecondOrderIterations) + "], got " +
+                std::to_string(iterations));
+}
+
+std::unique_ptr<SecondOrderBuilder> make_second_order_builder(const std::string& name) {
+  if (name == "plain") return std::make_unique<PlainSecondOrderBuilder>();
+  if (name == "fast") return std::make_unique<FastSecondOrderBuilder>();
+  throw Error("unknown second-order table builder '" + name + "' (known: plain, fast)");
+}
+
+SecondOrderLengthTable::SecondOrderLengthTable(std::vector<SecondOrderTable> slices, double max_length)
+    : slices_(std::move(slices)), max_length_(max_length) {
+  if (slices_.size() < 2) throw Error("a table with lengths needs at least 2 lengths");
+}
+
+Rgba SecondOrderLengthTable::lookup(double length, double s_f, double s_m, double s_b) const {
+  const int m = static_cast<int>(slices_.size());
+  const double u = std::clamp(length / max_length_, 0.0, 1.0) * (m - 1);
+  const int i = std::min(static_cast<int>(u), m - 2);
+  const double w = u - i;
+  const Rgba lo = slices_[i].lookup(s_f, s_m, s_b), hi = slices_[i + 1].lookup(s_f, s_m, s_b);
+  Rgba out;
+  for (int c = 0; c < 4; ++c) out[c] = (1 - w) * lo[c] + w * hi[c];
+  return out;
+}
+
+std::size_t SecondOrderLengthTable::bytes() const {
+  std::size_t total = 0;
+  for (const auto& s : slices_) total += s.bytes();
+  return total;
+}
+
+SecondOrderLengthTable build_second_order_length_table(const SecondOrderBuilder& builder, const DiscreteTf& tf,
+                                                       int lengths, double max_length, int iterations) {
+  if (lengths < 2) throw Error("--lengths must be >= 2, got " + std::to_string(lengths));
+  if (!(max_length > 0) || !std::isfinite(max_length))
+    throw Error("--max-length must be a positive number, got " + std::to_string(max_length));
+  check_iterations(iterations);
+  if (static_cast<std::size_t>(lengths) * cube(tf.size()) > kMaxSecondOrderEntries)
+    throw Error("a second-order table of " + std::to_string(lengths) + " lengths x " + std::to_string(tf.size()) +
+                "^3 entries exceeds " + std::to_string(kMaxSecondOrderEntries) + " entries (1 GiB)");
+  std::vector<SecondOrderTable> slices;
+  // Length 0 is the empty slab; builders take only positive lengths. The
+  // builders are parallel inside, so the lengths go one after the other.
+  slices.emplace_back(tf.axis(), 0.0, iterations);
+  for (int m = 1; m < lengths; ++m) slices.push_back(builder.build(tf, max_length * m / (lengths - 1), iterations));
+  return SecondOrderLengthTable(std::move(slices), max_length);
+}
+
+}  // namespace vri
