@@ -18,15 +18,17 @@ namespace {
 
 std::size_t cube(std::size_t n) { return n * n * n; }
 
+std::size_t checked_entries(int n) {
+  if (cube(n) > kMaxSecondOrderEntries)
+    throw Error("a second-order table of size " + std::to_string(n) + " exceeds " +
+                std::to_string(kMaxSecondOrderEntries) + " entries (1 GiB); use --size <= 406");
+  return cube(n);
+}
+
 }  // namespace
 
 SecondOrderTable::SecondOrderTable(const ScalarAxis& axis, double length, int iterations)
-    : axis_(axis), length_(length), iterations_(iterations) {
-  if (cube(axis.n) > kMaxSecondOrderEntries)
-    throw Error("a second-order table of size " + std::to_string(axis.n) + " exceeds " +
-                std::to_string(kMaxSecondOrderEntries) + " entries (1 GiB); use --size <= 406");
-  data_.assign(4 * cube(axis.n), 0.0f);
-}
+    : axis_(axis), length_(length), iterations_(iterations), data_(4 * checked_entries(axis.n)) {}
 
 Rgba SecondOrderTable::lookup(double s_f, double s_m, double s_b) const {
   return trilinear_rgba(data(), axis_.n, axis_.index(s_f), axis_.index(s_m), axis_.index(s_b));

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "vri/core/rgba.hpp"
+#include "vri/core/zeroed_floats.hpp"
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/slab_rgba.hpp"
 
@@ -63,7 +64,7 @@ class SecondOrderTable {
   ScalarAxis axis_;
   double length_;
   int iterations_;
-  std::vector<float> data_;
+  ZeroedFloats data_;
 };
 
 // One entry of the model above at continuous indices (DiscreteTf::at_index)
