@@ -41,24 +41,40 @@ struct FrontToBack {
 
 // Marches `ray` in slabs of Samples - 1 steps of h (world units) and composites
 // lookup(s) -> Rgba for every full slab, s holding its Samples scalars front to
-// back, then the partial slab as described above.
-template <int Samples, class Lookup>
-Rgba march_uniform_slabs(const GridVolume& volume, const DiscreteTf& tf, const Ray& ray, double h,
-                         Lookup&& lookup) {
+// back, then the partial slab as described above. The next slab's samples are
+// taken before the current lookup and handed to prefetch(s), so a large table
+// can start loading its entries while this slab is composited.
+struct NoPrefetch {
+  template <class S>
+  void operator()(const S&) const {}
+};
+
+template <int Samples, class Lookup, class Prefetch = NoPrefetch>
+Rgba march_uniform_slabs(const GridVolume& volume, const DiscreteTf& tf, const Ray& ray, double h, Lookup&& lookup,
+                         Prefetch&& prefetch = {}) {
   static_assert(Samples >= 2);
   constexpr int steps = Samples - 1;
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const double slab = steps * h;
   const long long full = static_cast<long long>(std::floor(iv->length() / slab));
-  FrontToBack acc;
-  std::array<double, Samples> s;
-  s[0] = volume.sample(ray.at(iv->t0));
-  for (long long k = 0; k < full; ++k) {
+  using Scalars = std::array<double, Samples>;
+  const auto fill = [&](Scalars& s, long long k) {
     for (int i = 1; i < Samples; ++i) s[i] = volume.sample(ray.at(iv->t0 + (k * steps + i) * h));
+  };
+  FrontToBack acc;
+  Scalars s{}, next{};
+  s[0] = volume.sample(ray.at(iv->t0));
+  if (full > 0) fill(s, 0);
+  for (long long k = 0; k < full; ++k) {
+    next[0] = s[steps];
+    if (k + 1 < full) {
+      fill(next, k + 1);
+      prefetch(next);
+    }
     const Rgba v = lookup(s);
     acc.add(v[0], v[1], v[2], v[3]);
-    s[0] = s[steps];
+    s = next;
   }
   const double t_rest = iv->t0 + full * steps * h;
   const double sub = (iv->t1 - t_rest) / steps;

@@ -13,6 +13,7 @@
 #include "vri/io/volvis_dat.hpp"
 #include "vri/io/vtk_legacy.hpp"
 #include "vri/io/vtu.hpp"
+#include "vri/tables/second_order_table.hpp"
 #include "vri/mesh/tetrahedralize.hpp"
 #include "vri/scene/scene.hpp"
 #include "vri/volume/builtin_volumes.hpp"
@@ -260,8 +261,8 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     method.length_samples = m.integer(mj, "length_samples", method.length_samples);
     method.planes = m.integer(mj, "planes", method.planes);
     method.iterations = m.integer(mj, "iterations", method.iterations);
-    if (method.iterations < 1 || method.iterations > MethodSpec::kMaxIterations)
-      throw Error(m.ctx + ": 'iterations' must be in [1, " + std::to_string(MethodSpec::kMaxIterations) + "]");
+    if (method.iterations < 1 || method.iterations > kMaxSecondOrderIterations)
+      throw Error(m.ctx + ": 'iterations' must be in [1, " + std::to_string(kMaxSecondOrderIterations) + "]");
     method.h0 = m.number(mj, "h0", method.h0);
     method.hmin = m.number(mj, "hmin", method.hmin);
     method.hmax = m.number(mj, "hmax", method.hmax);

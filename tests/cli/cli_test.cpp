@@ -52,6 +52,8 @@ TEST(Cli, RendersComparesAndOverrides) {
   EXPECT_EQ(img.shape, (std::vector<std::size_t>{12, 16, 4}));
   r = run("render " + scene + " -o " + b.string() + " --method riemann --step 0.5 --width 16 --height 12", dir);
   ASSERT_EQ(r.code, 0) << r.err;
+  r = run("render " + scene + " -o " + b.string() + " --method preint2 --step 0.5 --table-size 16 --iterations 4", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
   r = run("render " + scene + " -o " + png.string() + " --width 7 --height 5", dir);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(png));
@@ -91,6 +93,8 @@ TEST(Cli, BadInputIsRefusedCleanly) {
       "render " + (dir / "shortraw.json").string() + " -o " + out,
       "render " + good + " -o " + out + " --method nonsense",
       "render " + good + " -o " + out + " --method riemann --step -1",
+      "render " + good + " -o " + out + " --method preint2 --table-size 8 --iterations 0",
+      "render " + good + " -o " + out + " --method preint2-dual --table-size 512",
       "render " + good + " -o " + out + " --width 0",
       "render " + good + " -o " + out + " --width 100000 --height 100000",
       "render " + good + " -o " + out + " --tolerance 5",

@@ -21,7 +21,6 @@ struct MethodSpec {
   // preint*: pre-integration table builder. preint2* use it when it names a
   // second-order builder (plain, fast), else the fast one.
   std::string builder = "incremental";
-  static constexpr int kMaxIterations = 4096;
 };
 
 }  // namespace vri

@@ -1,0 +1,44 @@
+#pragma once
+// Preint2DualIntegrator (SPEC §9 `preint2-dual`): second-order pre-integration
+// with samples on the dual-voxel (cell) faces, El Hajjar, Marchesin, Dischler
+// & Mongenet 2008, Section 4. The ray is cut where it crosses cell faces
+// (cell_traversal.hpp) and sampled at each crossing and at the midpoint of
+// each crossing interval, so every slab lies inside one cell, where the
+// trilinear signal is a true cubic, and the parabola through its front,
+// middle and back samples (eq. 2) follows it closely. Slab lengths vary, so
+// the lookups go to a SecondOrderLengthTable over (l, s_f, s_m, s_b) (the
+// paper's 4D table, eq. 2-3): kLengths lengths from 0 to the longest in-cell
+// chord, sqrt(3) times the largest grid spacing, linear in l between them.
+//
+// Memory: kLengths * table_size^3 RGBA float32 entries, 128 MiB at the
+// default table_size 64; over kMaxSecondOrderEntries (1 GiB, table_size > 128)
+// build_second_order_length_table refuses before building anything.
+#include <string>
+
+#include "vri/integrators/integrator.hpp"
+#include "vri/tables/discrete_tf.hpp"
+#include "vri/tables/second_order_table.hpp"
+#include "vri/volume/grid_volume.hpp"
+
+namespace vri {
+
+class Preint2DualIntegrator final : public Integrator {
+ public:
+  static constexpr int kDefaultTableSize = 64;
+  static constexpr int kLengths = 32;
+
+  // Throws vri::Error when the table would exceed kMaxSecondOrderEntries or
+  // the iterations are out of range (see preint2.hpp for the builder).
+  Preint2DualIntegrator(const GridVolume& volume, const TransferFunction& tf, int table_size, int iterations,
+                        const std::string& builder);
+  Rgba integrate(const Ray& ray) const override;
+  std::string_view name() const override { return "preint2-dual"; }
+
+  const SecondOrderLengthTable& table() const { return table_; }
+
+ private:
+  const GridVolume& volume_;
+  SecondOrderLengthTable table_;
+};
+
+}  // namespace vri
