@@ -31,7 +31,10 @@ std::string dict_value(const std::string& header, const std::string& key, const 
 
 NpyArray read_npy(const std::filesystem::path& path) {
   const auto bytes = read_file(path);
-  const std::string where = "'" + path.string() + "'";
+  // Appended, not "'" + ...: GCC 12 warns falsely (-Wrestrict) on that form here.
+  std::string where(1, '\'');
+  where += path.string();
+  where += '\'';
   if (bytes.size() < 10 || std::memcmp(bytes.data(), "\x93NUMPY", 6) != 0)
     throw Error(where + " is not a .npy file");
   const int major = int(bytes[6]);
