@@ -1,0 +1,143 @@
+// DiagonalSweep (incremental_diagonals.hpp): incremental subrange integration
+// along one diagonal (Lum, Wilson & Ma 2004, §4.2, Figs. 4-5), each piece's
+// premultiplied (C, alpha) one vector of 4 doubles.
+// 4-double vectors are inlined into the cloned functions below (and
+// thin_piece_weights): no vector crosses a call, so GCC's warning that their
+// ABI differs without AVX does not apply.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+#include "incremental_diagonals.hpp"
+
+#include <cstring>
+
+namespace vri {
+
+namespace {
+
+using V4 = double __attribute__((vector_size(32)));
+using F4 = float __attribute__((vector_size(16)));
+using I4 = long long __attribute__((vector_size(32)));
+
+// Vectors stay inside these always-inlined helpers and the cloned functions
+// below: no vector crosses a call.
+#define VRI_INLINE __attribute__((always_inline)) inline
+
+VRI_INLINE V4 load(const void* p) {
+  V4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+VRI_INLINE void store(const V4& v, SlabRgba& out) { std::memcpy(static_cast<void*>(&out), &v, sizeof v); }
+VRI_INLINE void store(const V4& v, Entry& out) {
+  const F4 f = __builtin_convertvector(v, F4);
+  std::memcpy(out.data(), &f, sizeof f);
+}
+VRI_INLINE V4 splat(double x) { return V4{x, x, x, x}; }
+// over(front, back) = front + (1 - front.a) back (slab_rgba.hpp).
+VRI_INLINE V4 over(const V4& front, const V4& back) {
+  return front + (1.0 - __builtin_shuffle(front, I4{3, 3, 3, 3})) * back;
+}
+
+// The series (piece_weights.hpp) four pieces at a time, then the pieces too
+// thick for it again by quadrature: thick_piece_weights.
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void diagonal_weights(const Pieces& pieces, double d,
+                                                                                DiagonalSweep::Weights& w) {
+  const int count = pieces.size() - 1;
+  const double* tau = pieces.tau.data();
+  const auto set = [&w](int k, const PieceWeights& p) {
+    w.fp[k] = p.fp, w.fq[k] = p.fq, w.bq[k] = p.bq, w.bp[k] = p.bp, w.alpha[k] = p.alpha;
+  };
+  const double thin = piece_series::kThin;
+  int k = 0;
+  for (; k + 3 < count; k += 4) {
+    const V4 a = load(tau + k) * d, b = load(tau + k + 1) * d;
+    const auto p = thin_piece_weights(a < thin ? a : thin, b < thin ? b : thin);
+    std::memcpy(&w.fp[k], &p.fp, sizeof(V4));
+    std::memcpy(&w.fq[k], &p.fq, sizeof(V4));
+    std::memcpy(&w.bq[k], &p.bq, sizeof(V4));
+    std::memcpy(&w.bp[k], &p.bp, sizeof(V4));
+    std::memcpy(&w.alpha[k], &p.alpha, sizeof(V4));
+  }
+  for (; k < count; ++k) set(k, thin_piece_weights(std::min(tau[k] * d, thin), std::min(tau[k + 1] * d, thin)));
+  for (int k : pieces.by_thickness) {
+    if (pieces.thickest(k) * d <= thin) break;
+    set(k, thick_piece_weights(tau[k] * d, tau[k + 1] * d));
+  }
+}
+
+// Entry (i, i+m) covers pieces i .. e = i+m-1: a whole bin, or the tail of
+// one bin followed by the head of the next; entry (i+m, i) the same pieces
+// integrated backwards and composited in the opposite order.
+template <class Out>
+VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep::Weights& w,
+                                   DiagonalSweep::Subranges& s, Out* upper, Out* lower) {
+  const int count = static_cast<int>(w.fp.size()), n = count + 1;
+  const V4 rgb{1, 1, 1, 0}, a_lane{0, 0, 0, 1};
+  for (int k = 0; k < count; ++k) {
+    const V4 p = load(&c[k]) * rgb, q = load(&c[k + 1]) * rgb, a = a_lane * w.alpha[k];
+    store(p * w.fp[k] + q * w.fq[k] + a, s.piece_f[k]);
+    store(q * w.bq[k] + p * w.bp[k] + a, s.piece_b[k]);
+  }
+  for (int start = 0; start < count; start += m) {
+    const int end = std::min(start + m, count);
+    // The four chains in one loop, so they overlap in the pipeline. Each
+    // carries its own transmittance where the new piece lies behind it, so
+    // every step is one dependent multiply-add.
+    V4 hf = load(&s.piece_f[start]), hb = load(&s.piece_b[start]);
+    V4 tf = load(&s.piece_f[end - 1]), tb = load(&s.piece_b[end - 1]);
+    V4 hf_t = splat(1 - w.alpha[start]), tb_t = splat(1 - w.alpha[end - 1]);
+    store(hf, s.head_f[start]), store(hb, s.head_b[start]);
+    store(tf, s.tail_f[end - 1]), store(tb, s.tail_b[end - 1]);
+    for (int h = start + 1, t = end - 2; h < end; ++h, --t) {
+      const V4 e_h = splat(1 - w.alpha[h]), e_t = splat(1 - w.alpha[t]);
+      hf += hf_t * load(&s.piece_f[h]), hf_t *= e_h;  // head_f[h] = over(head_f[h-1], piece)
+      hb = load(&s.piece_b[h]) + e_h * hb;            // head_b[h] = over(piece, head_b[h-1])
+      tf = load(&s.piece_f[t]) + e_t * tf;            // tail_f[t] = over(piece, tail_f[t+1])
+      tb += tb_t * load(&s.piece_b[t]), tb_t *= e_t;  // tail_b[t] = over(tail_b[t+1], piece)
+      store(hf, s.head_f[h]), store(hb, s.head_b[h]);
+      store(tf, s.tail_f[t]), store(tb, s.tail_b[t]);
+    }
+  }
+  for (int i = 0, in_bin = 0; i + m < n; ++i, in_bin = in_bin + 1 == m ? 0 : in_bin + 1) {
+    const int e = i + m - 1;
+    if (in_bin == 0) {  // i % m == 0, without a division per entry
+      store(load(&s.tail_f[i]), upper[i]);
+      store(load(&s.tail_b[i]), lower[i]);
+    } else {
+      store(over(load(&s.tail_f[i]), load(&s.head_f[e])), upper[i]);
+      store(over(load(&s.head_b[e]), load(&s.tail_b[i])), lower[i]);
+    }
+  }
+}
+
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_doubles(
+    const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s, SlabRgba* upper,
+    SlabRgba* lower) {
+  composite_diagonal(c, m, w, s, upper, lower);
+}
+
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_floats(
+    const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s, Entry* upper,
+    Entry* lower) {
+  composite_diagonal(c, m, w, s, upper, lower);
+}
+
+}  // namespace
+
+DiagonalSweep::DiagonalSweep(int n) {
+  const std::size_t count = n - 1;
+  for (auto* v : {&w_.fp, &w_.fq, &w_.bq, &w_.bp, &w_.alpha}) v->resize(count);
+  for (auto* v : {&s_.piece_f, &s_.piece_b, &s_.head_f, &s_.tail_f, &s_.head_b, &s_.tail_b}) v->resize(count);
+}
+
+void DiagonalSweep::weights(const Pieces& pieces, double length, int m) { diagonal_weights(pieces, length / m, w_); }
+
+void DiagonalSweep::composite(const TfSample* c, int m, SlabRgba* upper, SlabRgba* lower) {
+  composite_doubles(c, m, w_, s_, upper, lower);
+}
+
+void DiagonalSweep::composite(const TfSample* c, int m, Entry* upper, Entry* lower) {
+  composite_floats(c, m, w_, s_, upper, lower);
+}
+
+}  // namespace vri
