@@ -70,7 +70,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void diagonal_weight
 // integrated backwards and composited in the opposite order.
 template <class Out>
 VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep::Weights& w,
-                                   DiagonalSweep::Subranges& s, Out* upper, Out* lower) {
+                                   DiagonalSweep::Subranges& s, Out* upper, Out* lower, std::ptrdiff_t stride) {
   const int count = static_cast<int>(w.fp.size()), n = count + 1;
   const V4 rgb{1, 1, 1, 0}, a_lane{0, 0, 0, 1};
   for (int k = 0; k < count; ++k) {
@@ -101,11 +101,11 @@ VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep
   for (int i = 0, in_bin = 0; i + m < n; ++i, in_bin = in_bin + 1 == m ? 0 : in_bin + 1) {
     const int e = i + m - 1;
     if (in_bin == 0) {  // i % m == 0, without a division per entry
-      store(load(&s.tail_f[i]), upper[i]);
-      store(load(&s.tail_b[i]), lower[i]);
+      store(load(&s.tail_f[i]), upper[i * stride]);
+      store(load(&s.tail_b[i]), lower[i * stride]);
     } else {
-      store(over(load(&s.tail_f[i]), load(&s.head_f[e])), upper[i]);
-      store(over(load(&s.head_b[e]), load(&s.tail_b[i])), lower[i]);
+      store(over(load(&s.tail_f[i]), load(&s.head_f[e])), upper[i * stride]);
+      store(over(load(&s.head_b[e]), load(&s.tail_b[i])), lower[i * stride]);
     }
   }
 }
@@ -113,13 +113,13 @@ VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep
 __attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_doubles(
     const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s, SlabRgba* upper,
     SlabRgba* lower) {
-  composite_diagonal(c, m, w, s, upper, lower);
+  composite_diagonal(c, m, w, s, upper, lower, 1);
 }
 
 __attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_floats(
-    const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s, Entry* upper,
-    Entry* lower) {
-  composite_diagonal(c, m, w, s, upper, lower);
+    const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s, float* upper,
+    float* lower, std::ptrdiff_t stride) {
+  composite_diagonal(c, m, w, s, reinterpret_cast<Entry*>(upper), reinterpret_cast<Entry*>(lower), stride);
 }
 
 }  // namespace
@@ -136,8 +136,9 @@ void DiagonalSweep::composite(const TfSample* c, int m, SlabRgba* upper, SlabRgb
   composite_doubles(c, m, w_, s_, upper, lower);
 }
 
-void DiagonalSweep::composite(const TfSample* c, int m, Entry* upper, Entry* lower) {
-  composite_floats(c, m, w_, s_, upper, lower);
+void DiagonalSweep::composite(const TfSample* c, int m, PreintegrationTable& table) {
+  // Entry (i, i+m) is 4 (n + 1) floats after entry (i-1, i-1+m).
+  composite_floats(c, m, w_, s_, table.entry(0, m), table.entry(m, 0), table.size() + 1);
 }
 
 }  // namespace vri

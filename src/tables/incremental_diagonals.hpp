@@ -49,9 +49,10 @@ class DiagonalSweep {
 
   // Composites the colours c[0 .. n-1] (r, g, b of TfSample; tau is the
   // pieces') over diagonal m (after weights(..., m)): upper[i] = entry
-  // (i, i+m), lower[i] = entry (i+m, i), i = 0 .. n-1-m.
+  // (i, i+m), lower[i] = entry (i+m, i), i = 0 .. n-1-m; or straight into
+  // the table's entries, rounded to float.
   void composite(const TfSample* c, int m, SlabRgba* upper, SlabRgba* lower);
-  void composite(const TfSample* c, int m, Entry* upper, Entry* lower);
+  void composite(const TfSample* c, int m, PreintegrationTable& table);
 
   // Per piece k (table scalars k, k+1): the weights of piece_weights.hpp,
   // planar so the series loop vectorises.
