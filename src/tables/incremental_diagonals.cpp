@@ -44,19 +44,21 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void diagonal_weight
                                                                                 DiagonalSweep::Weights& w) {
   const int count = pieces.size() - 1;
   const double* tau = pieces.tau.data();
-  const auto set = [&w](int k, const PieceWeights& p) {
-    w.fp[k] = p.fp, w.fq[k] = p.fq, w.bq[k] = p.bq, w.bp[k] = p.bp, w.alpha[k] = p.alpha;
+  // Local pointers: the stores below cannot change them, so they stay in registers.
+  double *fp = w.fp.data(), *fq = w.fq.data(), *bq = w.bq.data(), *bp = w.bp.data(), *alpha = w.alpha.data();
+  const auto set = [&](int k, const PieceWeights& p) {
+    fp[k] = p.fp, fq[k] = p.fq, bq[k] = p.bq, bp[k] = p.bp, alpha[k] = p.alpha;
   };
   const double thin = piece_series::kThin;
   int k = 0;
   for (; k + 3 < count; k += 4) {
     const V4 a = load(tau + k) * d, b = load(tau + k + 1) * d;
     const auto p = thin_piece_weights(a < thin ? a : thin, b < thin ? b : thin);
-    std::memcpy(&w.fp[k], &p.fp, sizeof(V4));
-    std::memcpy(&w.fq[k], &p.fq, sizeof(V4));
-    std::memcpy(&w.bq[k], &p.bq, sizeof(V4));
-    std::memcpy(&w.bp[k], &p.bp, sizeof(V4));
-    std::memcpy(&w.alpha[k], &p.alpha, sizeof(V4));
+    std::memcpy(fp + k, &p.fp, sizeof(V4));
+    std::memcpy(fq + k, &p.fq, sizeof(V4));
+    std::memcpy(bq + k, &p.bq, sizeof(V4));
+    std::memcpy(bp + k, &p.bp, sizeof(V4));
+    std::memcpy(alpha + k, &p.alpha, sizeof(V4));
   }
   for (; k < count; ++k) set(k, thin_piece_weights(std::min(tau[k] * d, thin), std::min(tau[k + 1] * d, thin)));
   for (int k : pieces.by_thickness) {
@@ -72,40 +74,44 @@ template <class Out>
 VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep::Weights& w,
                                    DiagonalSweep::Subranges& s, Out* upper, Out* lower, std::ptrdiff_t stride) {
   const int count = static_cast<int>(w.fp.size()), n = count + 1;
+  // Local pointers: the stores below cannot change them, so they stay in registers.
+  const double *fp = w.fp.data(), *fq = w.fq.data(), *bq = w.bq.data(), *bp = w.bp.data(), *alpha = w.alpha.data();
+  SlabRgba *piece_f = s.piece_f.data(), *piece_b = s.piece_b.data();
+  SlabRgba *head_f = s.head_f.data(), *head_b = s.head_b.data(), *tail_f = s.tail_f.data(), *tail_b = s.tail_b.data();
   const V4 rgb{1, 1, 1, 0}, a_lane{0, 0, 0, 1};
   for (int k = 0; k < count; ++k) {
-    const V4 p = load(&c[k]) * rgb, q = load(&c[k + 1]) * rgb, a = a_lane * w.alpha[k];
-    store(p * w.fp[k] + q * w.fq[k] + a, s.piece_f[k]);
-    store(q * w.bq[k] + p * w.bp[k] + a, s.piece_b[k]);
+    const V4 p = load(&c[k]) * rgb, q = load(&c[k + 1]) * rgb, a = a_lane * alpha[k];
+    store(p * fp[k] + q * fq[k] + a, piece_f[k]);
+    store(q * bq[k] + p * bp[k] + a, piece_b[k]);
   }
   for (int start = 0; start < count; start += m) {
     const int end = std::min(start + m, count);
     // The four chains in one loop, so they overlap in the pipeline. Each
     // carries its own transmittance where the new piece lies behind it, so
     // every step is one dependent multiply-add.
-    V4 hf = load(&s.piece_f[start]), hb = load(&s.piece_b[start]);
-    V4 tf = load(&s.piece_f[end - 1]), tb = load(&s.piece_b[end - 1]);
-    V4 hf_t = splat(1 - w.alpha[start]), tb_t = splat(1 - w.alpha[end - 1]);
-    store(hf, s.head_f[start]), store(hb, s.head_b[start]);
-    store(tf, s.tail_f[end - 1]), store(tb, s.tail_b[end - 1]);
+    V4 hf = load(&piece_f[start]), hb = load(&piece_b[start]);
+    V4 tf = load(&piece_f[end - 1]), tb = load(&piece_b[end - 1]);
+    V4 hf_t = splat(1 - alpha[start]), tb_t = splat(1 - alpha[end - 1]);
+    store(hf, head_f[start]), store(hb, head_b[start]);
+    store(tf, tail_f[end - 1]), store(tb, tail_b[end - 1]);
     for (int h = start + 1, t = end - 2; h < end; ++h, --t) {
-      const V4 e_h = splat(1 - w.alpha[h]), e_t = splat(1 - w.alpha[t]);
-      hf += hf_t * load(&s.piece_f[h]), hf_t *= e_h;  // head_f[h] = over(head_f[h-1], piece)
-      hb = load(&s.piece_b[h]) + e_h * hb;            // head_b[h] = over(piece, head_b[h-1])
-      tf = load(&s.piece_f[t]) + e_t * tf;            // tail_f[t] = over(piece, tail_f[t+1])
-      tb += tb_t * load(&s.piece_b[t]), tb_t *= e_t;  // tail_b[t] = over(tail_b[t+1], piece)
-      store(hf, s.head_f[h]), store(hb, s.head_b[h]);
-      store(tf, s.tail_f[t]), store(tb, s.tail_b[t]);
+      const V4 e_h = splat(1 - alpha[h]), e_t = splat(1 - alpha[t]);
+      hf += hf_t * load(&piece_f[h]), hf_t *= e_h;  // head_f[h] = over(head_f[h-1], piece)
+      hb = load(&piece_b[h]) + e_h * hb;            // head_b[h] = over(piece, head_b[h-1])
+      tf = load(&piece_f[t]) + e_t * tf;            // tail_f[t] = over(piece, tail_f[t+1])
+      tb += tb_t * load(&piece_b[t]), tb_t *= e_t;  // tail_b[t] = over(tail_b[t+1], piece)
+      store(hf, head_f[h]), store(hb, head_b[h]);
+      store(tf, tail_f[t]), store(tb, tail_b[t]);
     }
   }
   for (int i = 0, in_bin = 0; i + m < n; ++i, in_bin = in_bin + 1 == m ? 0 : in_bin + 1) {
     const int e = i + m - 1;
     if (in_bin == 0) {  // i % m == 0, without a division per entry
-      store(load(&s.tail_f[i]), upper[i * stride]);
-      store(load(&s.tail_b[i]), lower[i * stride]);
+      store(load(&tail_f[i]), upper[i * stride]);
+      store(load(&tail_b[i]), lower[i * stride]);
     } else {
-      store(over(load(&s.tail_f[i]), load(&s.head_f[e])), upper[i * stride]);
-      store(over(load(&s.head_b[e]), load(&s.tail_b[i])), lower[i * stride]);
+      store(over(load(&tail_f[i]), load(&head_f[e])), upper[i * stride]);
+      store(over(load(&head_b[e]), load(&tail_b[i])), lower[i * stride]);
     }
   }
 }
