@@ -79,27 +79,4 @@ inline Entry to_entry(double r, double g, double b, double a) {
 }
 inline Entry to_entry(const SlabRgba& v) { return to_entry(v.r, v.g, v.b, v.a); }
 
-// Diagonals are built kGroup at a time and stored row by row: entries
-// (i, i+m0 .. i+m0+kGroup-1) are adjacent in memory, one diagonal is not.
-inline constexpr int kGroup = 32;
-
-// One group's entries, diagonal by diagonal: upper (i, i+m) and lower (i+m, i)
-// at (m - m0) n + i.
-struct GroupBuffer {
-  std::vector<Entry> upper, lower;
-  explicit GroupBuffer(int n) : upper(std::size_t(kGroup) * n), lower(std::size_t(kGroup) * n) {}
-  Entry* upper_of(int n, int m_offset) { return &upper[std::size_t(m_offset) * n]; }
-  Entry* lower_of(int n, int m_offset) { return &lower[std::size_t(m_offset) * n]; }
-  // Copies diagonals m0 .. m1-1 into the table, row by row.
-  void store(int m0, int m1, PreintegrationTable& table) const {
-    const int n = table.size();
-    const auto at = [n](int m_offset, int i) { return std::size_t(m_offset) * n + i; };
-    for (int r = 0; r < n; ++r)
-      for (int m = m0; m < m1; ++m) {
-        if (r + m < n) std::copy_n(upper[at(m - m0, r)].data(), 4, table.entry(r, r + m));
-        if (r - m >= 0) std::copy_n(lower[at(m - m0, r - m)].data(), 4, table.entry(r, r - m));
-      }
-  }
-};
-
 }  // namespace vri
