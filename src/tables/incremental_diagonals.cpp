@@ -70,6 +70,8 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void diagonal_weight
 // Entry (i, i+m) covers pieces i .. e = i+m-1: a whole bin, or the tail of
 // one bin followed by the head of the next; entry (i+m, i) the same pieces
 // integrated backwards and composited in the opposite order.
+constexpr int kAhead = 16;  // entries
+
 template <class Out>
 VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep::Weights& w,
                                    DiagonalSweep::Subranges& s, Out* upper, Out* lower, std::ptrdiff_t stride) {
@@ -106,6 +108,11 @@ VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep
   }
   for (int i = 0, in_bin = 0; i + m < n; ++i, in_bin = in_bin + 1 == m ? 0 : in_bin + 1) {
     const int e = i + m - 1;
+    // Table entries lie a row apart, each on its own cache line: fetch the
+    // lines ahead of the stores.
+    const std::ptrdiff_t ahead = std::min(i + kAhead, n - 1 - m) * stride;
+    __builtin_prefetch(&upper[ahead], 1);
+    __builtin_prefetch(&lower[ahead], 1);
     if (in_bin == 0) {  // i % m == 0, without a division per entry
       store(load(&tail_f[i]), upper[i * stride]);
       store(load(&tail_b[i]), lower[i * stride]);
