@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "tables/second_order_substeps.hpp"
 #include "tables/trilinear.hpp"
 #include "vri/core/error.hpp"
 #include "vri/tables/second_order_fast.hpp"
@@ -36,14 +37,9 @@ Rgba SecondOrderTable::lookup(double s_f, double s_m, double s_b) const {
 
 SlabRgba second_order_entry(const DiscreteTf& tf, double u_f, double u_m, double u_b, double length,
                             int iterations) {
-  const double A = 2 * u_f - 4 * u_m + 2 * u_b, B = -3 * u_f + 4 * u_m - u_b, C = u_f;
-  const double top = tf.size() - 1, step = length / iterations;
   SlabRgba acc;
-  for (int k = 0; k < iterations; ++k) {
-    const double t = (k + 0.5) / iterations;
-    const double u = std::clamp((A * t + B) * t + C, 0.0, top);
-    acc = over(acc, homogeneous_slab(tf.at_index(u), step));
-  }
+  detail::for_each_second_order_substep(tf, u_f, u_m, u_b, length, iterations,
+                                        [&](double, const SlabRgba& v) { acc = over(acc, v); });
   return acc;
 }
 
