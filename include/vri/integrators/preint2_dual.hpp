@@ -13,9 +13,17 @@
 // Memory: kLengths * table_size^3 RGBA float32 entries, 128 MiB at the
 // default table_size 64; over kMaxSecondOrderEntries (1 GiB, table_size > 128)
 // build_second_order_length_table refuses before building anything.
+//
+// Lighting (SPEC §5): `sampled` only - one normal per slab, the mean of the
+// three samples' gradients, as preint2. `interpolated` is refused: it would
+// need the weighted tables of second_order_weighted.hpp per length, 3x the
+// memory (docs/LIGHTING.md, "Second order").
+#include <optional>
 #include <string>
 
 #include "vri/integrators/integrator.hpp"
+#include "vri/shading/headlight_shader.hpp"
+#include "vri/shading/lighting.hpp"
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/second_order_table.hpp"
 #include "vri/volume/grid_volume.hpp"
@@ -28,9 +36,10 @@ class Preint2DualIntegrator final : public Integrator {
   static constexpr int kLengths = 32;
 
   // Throws vri::Error when the table would exceed kMaxSecondOrderEntries or
-  // the iterations are out of range (see preint2.hpp for the builder).
+  // the iterations are out of range (see preint2.hpp for the builder), or for
+  // a lighting mode other than sampled.
   Preint2DualIntegrator(const GridVolume& volume, const TransferFunction& tf, int table_size, int iterations,
-                        const std::string& builder);
+                        const std::string& builder, const Lighting& lighting = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "preint2-dual"; }
 
@@ -38,6 +47,7 @@ class Preint2DualIntegrator final : public Integrator {
 
  private:
   const GridVolume& volume_;
+  std::optional<HeadlightShader> shader_;  // when lit
   SecondOrderLengthTable table_;
 };
 
