@@ -77,15 +77,20 @@ std::size_t SecondOrderLengthTable::bytes() const {
   return total;
 }
 
-SecondOrderLengthTable build_second_order_length_table(const SecondOrderBuilder& builder, const DiscreteTf& tf,
-                                                       int lengths, double max_length, int iterations) {
+void check_length_table(int lengths, double max_length, int n, int tables) {
   if (lengths < 2) throw Error("--lengths must be >= 2, got " + std::to_string(lengths));
   if (!(max_length > 0) || !std::isfinite(max_length))
     throw Error("--max-length must be a positive number, got " + std::to_string(max_length));
+  if (static_cast<std::size_t>(tables) * lengths * cube(n) > kMaxSecondOrderEntries)
+    throw Error("a second-order table of " + (tables > 1 ? std::to_string(tables) + " x " : std::string()) +
+                std::to_string(lengths) + " lengths x " + std::to_string(n) + "^3 entries exceeds " +
+                std::to_string(kMaxSecondOrderEntries) + " entries (1 GiB)");
+}
+
+SecondOrderLengthTable build_second_order_length_table(const SecondOrderBuilder& builder, const DiscreteTf& tf,
+                                                       int lengths, double max_length, int iterations) {
+  check_length_table(lengths, max_length, tf.size(), 1);
   check_iterations(iterations);
-  if (static_cast<std::size_t>(lengths) * cube(tf.size()) > kMaxSecondOrderEntries)
-    throw Error("a second-order table of " + std::to_string(lengths) + " lengths x " + std::to_string(tf.size()) +
-                "^3 entries exceeds " + std::to_string(kMaxSecondOrderEntries) + " entries (1 GiB)");
   std::vector<SecondOrderTable> slices;
   // Length 0 is the empty slab; builders take only positive lengths. The
   // builders are parallel inside, so the lengths go one after the other.

@@ -178,8 +178,6 @@ TEST(Preint2, RefusesBadParameters) {
     expect_refused({.name = name, .table_size = 16, .iterations = 4}, {.enabled = true, .mode = "phong"},
                    "lighting mode must be");
   }
-  expect_refused({.name = "preint2-dual", .table_size = 16, .iterations = 4}, {.enabled = true, .mode = "interpolated"},
-                 "interpolated is not supported");
   expect_refused({.name = "preint2", .step = 0, .table_size = 16}, {}, "step");
   expect_refused({.name = "preint2-dual", .table_size = 129, .table_size_given = true}, {}, "exceeds");
 }

@@ -11,8 +11,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <utility>
 
 #include "tables/random_tf.hpp"
+#include "vri/core/error.hpp"
 
 namespace vri {
 namespace {
@@ -132,6 +134,27 @@ TEST(SecondOrderWeighted, SameBytesForAnyThreadCount) {
                        &SecondOrderWeightedTables::back})
       EXPECT_EQ(std::memcmp((one.*table).data(), (two.*table).data(), (one.*table).bytes()), 0) << name;
   }
+}
+
+// preint2-dual's weighted tables: slice m of each is build_weighted at length
+// L_max m / (M - 1) (slice 0 empty), and the three count against the 1 GiB cap.
+TEST(SecondOrderWeighted, LengthTablesHoldTheWeightedSlices) {
+  const DiscreteTf tf(test::random_spiky_tf(2, 5.0), 9);
+  const auto fast = make_second_order_builder("fast");
+  const SecondOrderWeightedLengthTables t = build_second_order_weighted_length_tables(*fast, tf, 3, 2.0, 16);
+  const SecondOrderWeightedTables one = fast->build_weighted(tf, 1.0, 16), two = fast->build_weighted(tf, 2.0, 16);
+  for (auto [lengths, slice] : {std::pair{&t.full, &one.full}, std::pair{&t.middle, &one.middle},
+                                std::pair{&t.back, &one.back}}) {
+    ASSERT_EQ(lengths->slices().size(), 3u);
+    EXPECT_EQ(std::memcmp(lengths->slices()[1].data(), slice->data(), slice->bytes()), 0);
+    const float* empty = lengths->slices()[0].data();
+    EXPECT_TRUE(std::all_of(empty, empty + slice->bytes() / sizeof(float), [](float v) { return v == 0; }));
+  }
+  EXPECT_EQ(std::memcmp(t.back.slices()[2].data(), two.back.data(), two.back.bytes()), 0);
+  // 3 x 2 x 256^3 entries: 1.5 GiB.
+  EXPECT_THROW(build_second_order_weighted_length_tables(*fast, DiscreteTf(test::random_spiky_tf(1, 1.0), 256), 2,
+                                                         1.0, 8),
+               Error);
 }
 
 }  // namespace

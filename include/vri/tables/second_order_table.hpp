@@ -108,6 +108,10 @@ class SecondOrderLengthTable {
   double max_length_;
 };
 
+// Throws vri::Error unless lengths >= 2, max_length > 0 and
+// tables * lengths * n^3 <= kMaxSecondOrderEntries (1 GiB).
+void check_length_table(int lengths, double max_length, int n, int tables);
+
 // Throws vri::Error unless lengths >= 2, max_length > 0 and lengths * N^3 <=
 // kMaxSecondOrderEntries (1 GiB).
 SecondOrderLengthTable build_second_order_length_table(const SecondOrderBuilder& builder, const DiscreteTf& tf,

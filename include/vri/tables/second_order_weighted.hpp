@@ -47,4 +47,17 @@ struct SecondOrderWeights {
 SecondOrderWeights second_order_weighted_entry(const DiscreteTf& tf, double u_f, double u_m, double u_b,
                                                double length, int iterations);
 
+// preint2-dual's (l, s_f, s_m, s_b) tables with the weights: M slices of each
+// packed table, at the lengths of build_second_order_length_table (3x its
+// memory: 384 MiB at N = 64, M = 32).
+struct SecondOrderWeightedLengthTables {
+  SecondOrderLengthTable full, middle, back;
+};
+
+// Throws vri::Error as build_second_order_length_table, with 3 lengths * N^3
+// entries counted against kMaxSecondOrderEntries.
+SecondOrderWeightedLengthTables build_second_order_weighted_length_tables(const SecondOrderBuilder& builder,
+                                                                          const DiscreteTf& tf, int lengths,
+                                                                          double max_length, int iterations);
+
 }  // namespace vri
