@@ -1,6 +1,6 @@
 #include "vri/integrators/preint1.hpp"
 
-#include "preint1_slabs.hpp"
+#include "slab_policies.hpp"
 #include "vri/core/error.hpp"
 #include "vri/tables/slab_integral.hpp"
 #include "vri/tables/table_builder.hpp"
@@ -22,9 +22,12 @@ Preint1Integrator::Preint1Integrator(const GridVolume& volume, const TransferFun
 
 Rgba Preint1Integrator::integrate(const Ray& ray) const {
   using detail::march_uniform_slabs;
-  if (weighted_) return march_uniform_slabs<2>(volume_, ray, h_, preint1::Interpolated{*weighted_, tf_, *shader_, ray.dir});
-  if (shader_) return march_uniform_slabs<2>(volume_, ray, h_, preint1::Sampled{table_, tf_, *shader_, ray.dir});
-  return march_uniform_slabs<2>(volume_, ray, h_, preint1::Unlit{table_, tf_});
+  using Table = PreintegrationTable;
+  if (weighted_)
+    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Interpolated1{{tf_, *shader_, ray.dir}, *weighted_});
+  if (shader_)
+    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Sampled<2, Table>{table_, tf_, *shader_, ray.dir});
+  return march_uniform_slabs<2>(volume_, ray, h_, slabs::Unlit<2, Table>{table_, tf_});
 }
 
 }  // namespace vri

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "preint2_slabs.hpp"
+#include "slab_policies.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri {
@@ -50,13 +50,15 @@ Rgba Preint2Integrator::integrate(const Ray& ray) const {
     const auto prefetch = [&](const auto& s) {
       for (const SecondOrderTable* t : {&weighted_->full, &weighted_->middle, &weighted_->back}) prefetch_rows(*t, s);
     };
-    return march_uniform_slabs<3>(volume_, ray, h_, preint2::Interpolated{*weighted_, tf_, *shader_, ray.dir},
+    return march_uniform_slabs<3>(volume_, ray, h_, slabs::Interpolated2{{tf_, *shader_, ray.dir}, *weighted_},
                                   prefetch);
   }
   const auto prefetch = [&](const auto& s) { prefetch_rows(*table_, s); };
+  using Table = SecondOrderTable;
   if (shader_)
-    return march_uniform_slabs<3>(volume_, ray, h_, preint2::Sampled{*table_, tf_, *shader_, ray.dir}, prefetch);
-  return march_uniform_slabs<3>(volume_, ray, h_, preint2::Unlit{*table_, tf_}, prefetch);
+    return march_uniform_slabs<3>(volume_, ray, h_, slabs::Sampled<3, Table>{*table_, tf_, *shader_, ray.dir},
+                                  prefetch);
+  return march_uniform_slabs<3>(volume_, ray, h_, slabs::Unlit<3, Table>{*table_, tf_}, prefetch);
 }
 
 }  // namespace vri

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "preint2_slabs.hpp"
+#include "slab_policies.hpp"
 #include "ray_steps.hpp"
 #include "vri/core/error.hpp"
 #include "vri/volume/cell_traversal.hpp"
@@ -60,21 +60,20 @@ Preint2DualIntegrator::Preint2DualIntegrator(const GridVolume& volume, const Tra
 const SecondOrderLengthTable& Preint2DualIntegrator::table() const { return weighted_ ? weighted_->full : *table_; }
 
 Rgba Preint2DualIntegrator::integrate(const Ray& ray) const {
-  using Terms = HeadlightShader::Terms;
   if (weighted_)
     return march_cells(
         volume_, ray, [&](Vec3 p) { return shader_->at(p, ray.dir); },
         [&](const auto& f, const auto& m, const auto& b, double l) {
           const auto look = [&](const SecondOrderLengthTable& t) { return t.lookup(l, f.s, m.s, b.s); };
-          return preint2::lit_lagrange(std::array<Terms, 3>{f.state, m.state, b.state}, look(weighted_->full),
-                                       look(weighted_->middle), look(weighted_->back));
+          return slabs::lit_lagrange({f.state, m.state, b.state}, look(weighted_->full), look(weighted_->middle),
+                                     look(weighted_->back));
         });
   if (shader_)
     return march_cells(
         volume_, ray, [&](Vec3 p) { return shader_->gradients().sample(p); },
         [&](const auto& f, const auto& m, const auto& b, double l) {
-          return preint1::lit_by(shader_->terms(preint2::mean_gradient(f.state, m.state, b.state), ray.dir),
-                                 table_->lookup(l, f.s, m.s, b.s));
+          return slabs::lit_by(shader_->terms(slabs::mean_gradient(std::array{f, m, b}), ray.dir),
+                               table_->lookup(l, f.s, m.s, b.s));
         });
   struct Nothing {};
   return march_cells(

@@ -164,11 +164,11 @@ void store_weighted(float* e, const LaneResults& r, int view, int weight, int la
   for (int c = 0; c < 4; ++c) e[c] = r.weighted[view][weight][c][lane];
 }
 
-// Walks every entry as build() describes and hands each group of lanes to
-// store(f0, f_hi, d1, d2, results): entries (f, f + d1, f + d2) for
-// f = f0 .. min(f0 + 7, f_hi), and their reverses when d2 > 0.
+// Walks every entry as build() describes and hands each to
+// store(f, m, b, view, lane, results): view 0 is the entry (f, f + d1, f + d2)
+// of lane f - f0, view 1 its reverse (f + d2, f + d1, f) when d2 > 0.
 template <bool Weighted, class Store>
-void walk_diagonals(const DiscreteTf& tf, double length, int iterations, Store&& store_lanes) {
+void walk_diagonals(const DiscreteTf& tf, double length, int iterations, Store&& store_entry) {
   const int n = tf.size();
   const PaddedTf padded = pad_tf(tf, length / iterations);
   const SubstepWeights lagrange = Weighted ? substep_weights(iterations) : SubstepWeights{};
@@ -196,7 +196,11 @@ void walk_diagonals(const DiscreteTf& tf, double length, int iterations, Store&&
           composite_lanes_weighted(padded, index.data(), weight.data(), lagrange, iterations, out);
         else
           composite_lanes(padded, index.data(), weight.data(), iterations, out);
-        store_lanes(f0, f_hi, d1, d2, out);
+        for (int j = 0; j < kLanes && f0 + j <= f_hi; ++j) {
+          const int f = f0 + j;
+          store_entry(f, f + d1, f + d2, 0, j, out);
+          if (d2 > 0) store_entry(f + d2, f + d1, f, 1, j, out);
+        }
       }
     }
   });
@@ -208,12 +212,8 @@ SecondOrderTable FastSecondOrderBuilder::build(const DiscreteTf& tf, double leng
   check_slab_length(length);
   check_iterations(iterations);
   SecondOrderTable table(tf.axis(), length, iterations);
-  walk_diagonals<false>(tf, length, iterations, [&](int f0, int f_hi, int d1, int d2, const LaneResults& out) {
-    for (int j = 0; j < kLanes && f0 + j <= f_hi; ++j) {
-      const int f = f0 + j;
-      store(table.entry(f, f + d1, f + d2), out, 0, j);
-      if (d2 > 0) store(table.entry(f + d2, f + d1, f), out, 3, j);
-    }
+  walk_diagonals<false>(tf, length, iterations, [&](int f, int m, int b, int view, int j, const LaneResults& out) {
+    store(table.entry(f, m, b), out, 3 * view, j);
   });
   return table;
 }
@@ -222,21 +222,11 @@ SecondOrderWeightedTables FastSecondOrderBuilder::build_weighted(const DiscreteT
                                                                  int iterations) const {
   check_slab_length(length);
   check_iterations(iterations);
-  SecondOrderWeightedTables t{SecondOrderTable(tf.axis(), length, iterations),
-                              SecondOrderTable(tf.axis(), length, iterations),
-                              SecondOrderTable(tf.axis(), length, iterations)};
-  walk_diagonals<true>(tf, length, iterations, [&](int f0, int f_hi, int d1, int d2, const LaneResults& out) {
-    for (int j = 0; j < kLanes && f0 + j <= f_hi; ++j) {
-      const int f = f0 + j;
-      store(t.full.entry(f, f + d1, f + d2), out, 0, j);
-      store_weighted(t.middle.entry(f, f + d1, f + d2), out, 0, 0, j);
-      store_weighted(t.back.entry(f, f + d1, f + d2), out, 0, 1, j);
-      if (d2 > 0) {
-        store(t.full.entry(f + d2, f + d1, f), out, 3, j);
-        store_weighted(t.middle.entry(f + d2, f + d1, f), out, 1, 0, j);
-        store_weighted(t.back.entry(f + d2, f + d1, f), out, 1, 1, j);
-      }
-    }
+  SecondOrderWeightedTables t(tf.axis(), length, iterations);
+  walk_diagonals<true>(tf, length, iterations, [&](int f, int m, int b, int view, int j, const LaneResults& out) {
+    store(t.full.entry(f, m, b), out, 3 * view, j);
+    store_weighted(t.middle.entry(f, m, b), out, view, 0, j);
+    store_weighted(t.back.entry(f, m, b), out, view, 1, j);
   });
   return t;
 }

@@ -6,17 +6,6 @@
 
 namespace vri {
 
-namespace {
-
-void store(float* e, const SlabRgba& v) {
-  e[0] = static_cast<float>(v.r);
-  e[1] = static_cast<float>(v.g);
-  e[2] = static_cast<float>(v.b);
-  e[3] = static_cast<float>(v.a);
-}
-
-}  // namespace
-
 SecondOrderTable PlainSecondOrderBuilder::build(const DiscreteTf& tf, double length, int iterations) const {
   check_slab_length(length);
   check_iterations(iterations);
@@ -33,9 +22,7 @@ SecondOrderWeightedTables PlainSecondOrderBuilder::build_weighted(const Discrete
                                                                   int iterations) const {
   check_slab_length(length);
   check_iterations(iterations);
-  SecondOrderWeightedTables t{SecondOrderTable(tf.axis(), length, iterations),
-                              SecondOrderTable(tf.axis(), length, iterations),
-                              SecondOrderTable(tf.axis(), length, iterations)};
+  SecondOrderWeightedTables t(tf.axis(), length, iterations);
   const int n = tf.size();
   tbb::parallel_for(0, n, [&](int f) {
     for (int m = 0; m < n; ++m)

@@ -28,6 +28,9 @@
 namespace vri {
 
 struct SecondOrderWeightedTables {
+  // Three all-zero tables (SecondOrderTable's refusals apply).
+  SecondOrderWeightedTables(const ScalarAxis& axis, double length, int iterations)
+      : full(axis, length, iterations), middle(axis, length, iterations), back(axis, length, iterations) {}
   SecondOrderTable full, middle, back;  // packed as above
 };
 
