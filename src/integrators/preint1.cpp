@@ -1,9 +1,6 @@
 #include "vri/integrators/preint1.hpp"
 
-#include <cmath>
-
-#include "preint1_slabs.hpp"
-#include "ray_steps.hpp"
+#include "slab_policies.hpp"
 #include "vri/core/error.hpp"
 #include "vri/tables/slab_integral.hpp"
 #include "vri/tables/table_builder.hpp"
@@ -23,41 +20,14 @@ Preint1Integrator::Preint1Integrator(const GridVolume& volume, const TransferFun
   if (lighting.mode == "interpolated") weighted_.emplace(build_weighted_tables(tf_, h_));
 }
 
-template <class Policy>
-Rgba Preint1Integrator::march(const Ray& ray, const Policy& policy) const {
-  const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
-  if (!iv) return {0, 0, 0, 0};
-  const long long full = static_cast<long long>(std::floor(iv->length() / h_));
-  double T = 1, C[3] = {0, 0, 0};
-  const auto composite = [&](const Rgba& v) {
-    C[0] += T * v[0];
-    C[1] += T * v[1];
-    C[2] += T * v[2];
-    T *= 1 - v[3];
-  };
-  Vec3 p = ray.at(iv->t0);
-  double s_front = volume_.sample(p);
-  auto front = policy.at(p);
-  for (long long k = 1; k <= full; ++k) {
-    p = ray.at(iv->t0 + k * h_);
-    const double s_back = volume_.sample(p);
-    const auto back = policy.at(p);
-    composite(policy.slab(front, back, s_front, s_back));
-    s_front = s_back;
-    front = back;
-  }
-  const double rest = iv->t1 - (iv->t0 + full * h_);
-  if (rest > 0) {
-    p = ray.at(iv->t1);
-    composite(policy.last(front, policy.at(p), s_front, volume_.sample(p), rest));
-  }
-  return {C[0], C[1], C[2], 1 - T};
-}
-
 Rgba Preint1Integrator::integrate(const Ray& ray) const {
-  if (weighted_) return march(ray, preint1::Interpolated{*weighted_, tf_, *shader_, ray.dir});
-  if (shader_) return march(ray, preint1::Sampled{table_, tf_, *shader_, ray.dir});
-  return march(ray, preint1::Unlit{table_, tf_});
+  using detail::march_uniform_slabs;
+  using Table = PreintegrationTable;
+  if (weighted_)
+    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Interpolated1{{tf_, *shader_, ray.dir}, *weighted_});
+  if (shader_)
+    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Sampled<2, Table>{table_, tf_, *shader_, ray.dir});
+  return march_uniform_slabs<2>(volume_, ray, h_, slabs::Unlit<2, Table>{table_, tf_});
 }
 
 }  // namespace vri

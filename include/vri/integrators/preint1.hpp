@@ -44,9 +44,6 @@ class Preint1Integrator final : public Integrator {
   PreintegrationTable table_;
   std::optional<HeadlightShader> shader_;     // when lit
   std::optional<WeightedTables> weighted_;    // when lit and interpolated
-
-  template <class Policy>
-  Rgba march(const Ray& ray, const Policy& policy) const;
 };
 
 }  // namespace vri
