@@ -28,9 +28,9 @@ VRI_INLINE V4 load(const void* p) {
   return v;
 }
 VRI_INLINE void store(const V4& v, SlabRgba& out) { std::memcpy(static_cast<void*>(&out), &v, sizeof v); }
-VRI_INLINE void store(const V4& v, Entry& out) {
+VRI_INLINE void store(const V4& v, float& out) {  // out and the 3 floats after it
   const F4 f = __builtin_convertvector(v, F4);
-  std::memcpy(out.data(), &f, sizeof f);
+  std::memcpy(&out, &f, sizeof f);
 }
 VRI_INLINE V4 splat(double x) { return V4{x, x, x, x}; }
 // over(front, back) = front + (1 - front.a) back (slab_rgba.hpp).
@@ -67,11 +67,12 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void diagonal_weight
   }
 }
 
+constexpr int kAhead = 16;  // how many entries ahead the table is prefetched
+
 // Entry (i, i+m) covers pieces i .. e = i+m-1: a whole bin, or the tail of
 // one bin followed by the head of the next; entry (i+m, i) the same pieces
-// integrated backwards and composited in the opposite order.
-constexpr int kAhead = 16;  // entries
-
+// integrated backwards and composited in the opposite order. Entry i of the
+// diagonal goes to upper[i * stride] and lower[i * stride].
 template <class Out>
 VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep::Weights& w,
                                    DiagonalSweep::Subranges& s, Out* upper, Out* lower, std::ptrdiff_t stride) {
@@ -132,7 +133,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_doubl
 __attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_floats(
     const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s, float* upper,
     float* lower, std::ptrdiff_t stride) {
-  composite_diagonal(c, m, w, s, reinterpret_cast<Entry*>(upper), reinterpret_cast<Entry*>(lower), stride);
+  composite_diagonal(c, m, w, s, upper, lower, stride);
 }
 
 }  // namespace
@@ -151,7 +152,7 @@ void DiagonalSweep::composite(const TfSample* c, int m, SlabRgba* upper, SlabRgb
 
 void DiagonalSweep::composite(const TfSample* c, int m, PreintegrationTable& table) {
   // Entry (i, i+m) is 4 (n + 1) floats after entry (i-1, i-1+m).
-  composite_floats(c, m, w_, s_, table.entry(0, m), table.entry(m, 0), table.size() + 1);
+  composite_floats(c, m, w_, s_, table.entry(0, m), table.entry(m, 0), 4 * (table.size() + 1));
 }
 
 }  // namespace vri
