@@ -1,7 +1,7 @@
 // vri render SCENE.json -o OUT.(npy|png) [--method NAME] [--step H]
 //   [--tolerance E] [--table-size N] [--width W --height H] [--threads K]
 //   [--h0 H --hmin H --hmax H --strategy S] [--error-estimate ERR.npy]
-//   [--trace-pixel PX PY --trace STEPS.csv]
+//   [--trace-pixel PX PY --trace STEPS.csv] [--termination T] [--no-skip]
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -32,7 +32,8 @@ namespace {
 struct RenderArgs {
   std::string scene, output;
   std::optional<std::string> method;
-  std::optional<double> step, tolerance;
+  std::optional<double> step, tolerance, termination;
+  bool no_skip = false;
   std::optional<int> table_size, iterations, width, height;
   int threads = 0;
   std::optional<double> h0, hmin, hmax;
@@ -82,6 +83,8 @@ int run_render(const RenderArgs& args) {
   if (args.hmin) scene.method.hmin = *args.hmin;
   if (args.hmax) scene.method.hmax = *args.hmax;
   if (args.strategy) scene.method.strategy = *args.strategy;
+  if (args.termination) scene.method.fast.termination = *args.termination;
+  if (args.no_skip) scene.method.fast.skip_empty = false;
   if (args.error_estimate && std::filesystem::path(*args.error_estimate).extension() != ".npy")
     throw Error("--error-estimate '" + *args.error_estimate + "' must end in .npy");
   if (args.trace.has_value() != !args.trace_pixel.empty()) throw Error("--trace and --trace-pixel go together");
@@ -94,6 +97,8 @@ int run_render(const RenderArgs& args) {
   std::unique_ptr<SlabTable> table;
   std::optional<CylindricalTable> cylinder;
   if (projected) {
+    if (scene.method.fast.termination != 0)
+      throw Error(name + ": early ray termination is not supported yet; it works in riemann and preint1");
     table = make_slab_table(scene.method, scene.mesh(), scene.transfer_function);
     if (name == "pt-cylindrical")
       cylinder.emplace(*table, scene.transfer_function, scene.method.table_size,
@@ -135,6 +140,12 @@ int run_render(const RenderArgs& args) {
   std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '"
             << (projected ? name : std::string(integrator->name()))
             << "' in " << seconds << " s -> " << args.output << "\n";
+  if (const double eps = scene.method.fast.termination; eps > 0) {
+    const TerminationBound bound = termination_bound(image, eps);
+    std::cerr << "vri: early termination below transmittance " << eps << ": " << bound.pixels
+              << " pixels may have stopped early; each dropped at most " << bound.max_remaining
+              << " (their remaining transmittance) times its largest colour\n";
+  }
   return 0;
 }
 
@@ -150,6 +161,9 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--tolerance", args->tolerance, "Error tolerance (exact, adaptive)");
   cmd->add_option("--table-size", args->table_size, "Pre-integration table size");
   cmd->add_option("--iterations", args->iterations, "preint2*: parabola steps per table entry (1..4096)");
+  cmd->add_option("--termination", args->termination,
+                  "riemann, preint1: stop a ray once its transmittance is below this (0: off)");
+  cmd->add_flag("--no-skip", args->no_skip, "riemann, preint1: march through empty space too (the plain path)");
   cmd->add_option("--width", args->width, "Image width in pixels");
   cmd->add_option("--height", args->height, "Image height in pixels");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)");
