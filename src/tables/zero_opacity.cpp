@@ -23,9 +23,10 @@ bool ZeroOpacity::over(double lo, double hi) const {
     first = tf_->segment_index(lo);
     last = tf_->segment_index(hi);
   } else {
-    // index() is monotone in s, so every s in [lo, hi] lies between these entries.
+    // index() is monotone in s, so a lookup at any s in [lo, hi] gives weight
+    // only to entries floor(index(lo)) .. ceil(index(hi)) (an entry of weight 0 adds 0).
     first = static_cast<int>(axis_.index(lo));
-    last = std::min(axis_.n - 1, static_cast<int>(axis_.index(hi)) + 1);
+    last = static_cast<int>(std::ceil(axis_.index(hi)));
   }
   return opaque_before_[last + 1] == opaque_before_[first];
 }

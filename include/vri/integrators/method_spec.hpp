@@ -26,7 +26,7 @@ struct MethodSpec {
   // riemann, preint1: empty-space skipping (`skip_empty`, default on: it changes
   // no pixel) and early ray termination (`termination`, a transmittance
   // threshold; default 0, off). fast_path.hpp.
-  FastPath fast;
+  FastPath fast{};
 };
 
 }  // namespace vri

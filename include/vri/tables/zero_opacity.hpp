@@ -6,8 +6,8 @@
 // - from a TransferFunction (riemann): every linear piece that tf(s) evaluates
 //   for s in [lo, hi] has tau = 0 and slope 0, so tf(s).tau is exactly 0;
 // - from a DiscreteTf (pre-integrated methods): every table scalar x_i that a
-//   bilinear lookup at s in [lo, hi] can weigh, i from floor(index(lo)) to
-//   floor(index(hi)) + 1, has tau = 0; a table entry (f, b) integrates the
+//   bilinear lookup at s in [lo, hi] gives a weight, i from floor(index(lo))
+//   to ceil(index(hi)), has tau = 0; a table entry (f, b) integrates the
 //   discretised function between x_f and x_b, so it is zero.
 // Each query is O(1) after a binary search, so reclassifying every macro cell
 // after a transfer-function edit takes milliseconds (bench_macro_cells).
