@@ -3,6 +3,7 @@
 //   [--h0 H --hmin H --hmax H --strategy S] [--error-estimate ERR.npy]
 //   [--trace-pixel PX PY --trace STEPS.csv] [--termination T] [--no-skip]
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -123,11 +124,13 @@ int run_render(const RenderArgs& args) {
       throw Error("--trace-pixel " + std::to_string(px) + " " + std::to_string(py) + " lies outside the image");
   }
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();  // process CPU time, all threads
   const RenderOptions options{.threads = args.threads};
   const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options, scene.lighting)
                       : projected ? render_projected(camera, scene.mesh(), *table, options, scene.lighting)
                                   : render(camera, *integrator, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   Image estimate;
   if (args.error_estimate) estimate = render_error_estimate(camera, *estimating, {.threads = args.threads});
   std::string trace;
@@ -139,7 +142,7 @@ int run_render(const RenderArgs& args) {
   if (args.trace) write_file_atomically(*args.trace, std::as_bytes(std::span(trace.data(), trace.size())));
   std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '"
             << (projected ? name : std::string(integrator->name()))
-            << "' in " << seconds << " s -> " << args.output << "\n";
+            << "' in " << seconds << " s (CPU " << cpu_seconds << " s) -> " << args.output << "\n";
   if (const double eps = scene.method.fast.termination; eps > 0) {
     const TerminationBound bound = termination_bound(image, eps);
     std::cerr << "vri: early termination below transmittance " << eps << ": " << bound.pixels
