@@ -39,17 +39,17 @@ EmptySpace::Run EmptySpace::run(const Ray& ray, double t, double t_max) const {
     return (face - ray.origin[a]) / ray.dir[a];
   };
   double leave[3] = {exit(0), exit(1), exit(2)};
-  const auto next = [&] {
-    const int a = leave[0] <= leave[1] ? (leave[0] <= leave[2] ? 0 : 2) : (leave[1] <= leave[2] ? 1 : 2);
-    return a;
+  const auto next = [&] {  // the axis whose face the ray crosses first
+    return leave[0] <= leave[1] ? (leave[0] <= leave[2] ? 0 : 2) : (leave[1] <= leave[2] ? 1 : 2);
   };
-  if (!empty(cells_.index(cell[0], cell[1], cell[2]))) return {false, std::min(t_max, leave[next()])};
+  // Walk while the cells are as the first one (empty or not): the run ends where that changes.
+  const bool is_empty = empty(cells_.index(cell[0], cell[1], cell[2]));
   for (;;) {
     const int a = next();
-    if (leave[a] >= t_max) return {true, t_max};
+    if (leave[a] >= t_max) return {is_empty, t_max};
     cell[a] += step[a];
-    if (cell[a] < 0 || cell[a] >= m[a]) return {true, t_max};
-    if (!empty(cells_.index(cell[0], cell[1], cell[2]))) return {true, leave[a]};
+    if (cell[a] < 0 || cell[a] >= m[a]) return {is_empty, t_max};
+    if (empty(cells_.index(cell[0], cell[1], cell[2])) != is_empty) return {is_empty, leave[a]};
     leave[a] = exit(a);
   }
 }

@@ -58,6 +58,8 @@ TEST(ZeroOpacity, FollowsTheEntriesABilinearLookupReads) {
 
 // One non-zero sample at (20, 20, 20), in macro cell (2, 2, 2) only: a ray
 // along x at y = z = 20 leaps to x = 16, then stays in that cell until x = 24.
+// Another non-zero sample at (28, 20, 20) makes (3, 2, 2) non-empty too: the
+// non-empty run then lasts until x = 32, the far face.
 TEST(EmptySpace, RunsEndAtTheFacesOfNonEmptyCells) {
   const GridVolume volume = test::volume_from(
       {33, 33, 33}, [](double x, double y, double z) { return x == 20 && y == 20 && z == 20 ? 50.0 : 0.0; });
@@ -75,6 +77,15 @@ TEST(EmptySpace, RunsEndAtTheFacesOfNonEmptyCells) {
   const EmptySpace::Run c = space.run(ray, 26, 33);
   EXPECT_TRUE(c.empty);
   EXPECT_DOUBLE_EQ(c.t_end, 33);
+
+  const GridVolume two = test::volume_from({33, 33, 33}, [](double x, double y, double z) {
+    return (x == 20 || x == 28) && y == 20 && z == 20 ? 50.0 : 0.0;
+  });
+  const MacroCells cells2(two);
+  const EmptySpace space2(cells2, ZeroOpacity(tf));
+  const EmptySpace::Run d = space2.run(ray, 18, 40);
+  EXPECT_FALSE(d.empty);
+  EXPECT_DOUBLE_EQ(d.t_end, 40);  // leaves the macro grid at x = 32 (t = 33) still non-empty: t_max
 }
 
 }  // namespace

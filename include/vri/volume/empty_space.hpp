@@ -29,9 +29,9 @@ class EmptySpace {
   bool empty(std::size_t index) const { return empty_[index] != 0; }
   std::size_t empty_count() const;
 
-  // Where the ray stands at parameter t (t <= t_max): in a run of empty macro
-  // cells that ends at t_end (where it enters a non-empty one, or t_max), or
-  // in a non-empty macro cell that it leaves at t_end.
+  // Where the ray stands at parameter t (t <= t_max): in a run of empty
+  // (or of non-empty) macro cells that ends at t_end, where the ray enters a
+  // cell of the other kind, or t_max.
   struct Run {
     bool empty;
     double t_end;
