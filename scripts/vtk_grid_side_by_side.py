@@ -113,7 +113,7 @@ def vri_render(method, extra=(), repeat=args.repeat):
     out = os.path.join(args.out, f"{name}_vri_{method}{'_'.join(extra).replace('-', '_').replace('.', '')}.npy")
     best = None
     for _ in range(repeat):
-        r = subprocess.run([vri, "render", args.scene, "--method", method, "--width", str(size), "--height",
+        r = subprocess.run([vri, "render", args.scene, "--method", method, "--step", "1", "--width", str(size), "--height",
                             str(size), "--threads", "2", "-o", out, *extra], check=True, capture_output=True,
                            text=True)
         m = re.search(r" in ([0-9.eE+-]+) s \(CPU ([0-9.eE+-]+) s\)", r.stderr)
