@@ -2,6 +2,8 @@
 // El Hajjar et al. 2008 report 165 s CPU / 2.74 s GPU for 256^3 at 64 iterations).
 // The transfer function is presets/bonsai.json, slabs of one voxel.
 //   BM_SecondOrder/<builder>/N/K/threads   N^3 table, K iterations
+//   BM_SecondOrderWeighted/<builder>/N/K/threads   build_weighted: the table
+//       and the two weighted ones of interpolated lighting (second_order_weighted.hpp)
 //   BM_SecondOrderErrors/N/K               max and RMS over the table (all
 //       channels) of fast - plain and of half - float32 (fast), as counters
 #include <benchmark/benchmark.h>
@@ -13,6 +15,7 @@
 #include "vri/scene/scene.hpp"
 #include "vri/tables/half_second_order_table.hpp"
 #include "vri/tables/second_order_table.hpp"
+#include "vri/tables/second_order_weighted.hpp"
 
 namespace {
 
@@ -35,6 +38,17 @@ BENCHMARK_CAPTURE(BM_SecondOrder, plain, "plain")
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SecondOrder, fast, "fast")
+    ->ArgsProduct({{64, 128, 256}, {64}, {1, 2}})
+    ->Unit(benchmark::kMillisecond);
+
+void BM_SecondOrderWeighted(benchmark::State& state, const char* builder_name) {
+  const vri::DiscreteTf discrete = bench_tf(static_cast<int>(state.range(0)));
+  const auto builder = vri::make_second_order_builder(builder_name);
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, state.range(2));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(builder->build_weighted(discrete, 1.0, static_cast<int>(state.range(1))).back.data());
+}
+BENCHMARK_CAPTURE(BM_SecondOrderWeighted, fast, "fast")
     ->ArgsProduct({{64, 128, 256}, {64}, {1, 2}})
     ->Unit(benchmark::kMillisecond);
 

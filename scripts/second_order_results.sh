@@ -4,10 +4,12 @@
 # Renders neghip, fuel and bucky at SIZE x SIZE with `exact` (tolerance 1e-5),
 # preint1 at steps A and B, preint2 at step A (A, B = 2, 1; bucky 4, 1) with
 # tables of 256 (the default), 128 and 64 entries a side, and preint2-dual
-# (64 entries, 32 lengths), all with 64 iterations, and prints a Markdown table: the error
+# (64 entries, 32 lengths), all with 64 iterations, and preint1 at step 0.25
+# (about as many samples as preint2-dual), and prints a Markdown table: the error
 # against exact (worst channel: RMS, max, share of pixels over 1/255 from
 # `vri compare`) and the render time (the best of REPEATS, tables excluded),
-# with the table build time, on one thread. PNG images go to docs/second_order/.
+# with the table build time, on one thread. PNG images of exact, preint1 at A and B, preint2 at A and preint2-dual go
+# to docs/second_order/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}; size=${2:-256}; repeats=${3:-5}
@@ -28,7 +30,7 @@ render() {
     total=$(awk -v a="$total" -v b="$(awk -v x="$t0" -v y="$t1" 'BEGIN { print y - x }')" \
       'BEGIN { print (a == "" || b < a) ? b : a }')
   done
-  "$vri" render "$scene" -o "$out/$name.png" "${common[@]}" "$@" 2>/dev/null
+  if [ "${image:-1}" = 1 ]; then "$vri" render "$scene" -o "$out/$name.png" "${common[@]}" "$@" 2>/dev/null; fi
   printf "%.4f %.3f\n" "$best" "$total"
 }
 
@@ -47,13 +49,15 @@ for name in neghip fuel bucky; do
   read -r rt tt < <(repeats=1 render "$scene" "${name}_exact" --method exact --tolerance 1e-5)
   cp "$tmp/${name}_exact.npy" "$tmp/exact.npy"
   echo "| $name | exact | - | - | - | $rt | $tt |"
-  for m in "preint1 $a -" "preint1 $b -" "preint2 $a -" "preint2 $a 128" "preint2 $a 64" "preint2-dual - -"; do
+  for m in "preint1 $a -" "preint1 $b -" "preint2 $a -" "preint2 $a 128" "preint2 $a 64" "preint2-dual - -" \
+           "preint1 0.25 -"; do
     read -r method step table <<<"$m"
     label="$method"; args=(--method "$method")
     if [ "$step" != - ]; then label="$method@$step"; args+=(--step "$step"); fi
     if [ "$table" != - ]; then label="$label N=$table"; args+=(--table-size "$table"); fi
     key="${name}_${label//@/_step}"; key="${key// N=/_table}"
-    read -r rt tt < <(render "$scene" "$key" "${args[@]}")
+    image=1; if [ "$table" != - ] || [ "$step" = 0.25 ]; then image=0; fi  # images of the issue's methods only
+    read -r rt tt < <(image=$image render "$scene" "$key" "${args[@]}")
     echo "| $name | $label | $(error "$key") | $rt | $tt |"
   done
 done

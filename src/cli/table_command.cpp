@@ -80,7 +80,7 @@ int run_table(const TableArgs& args) {
   } else {
     const PreintegrationTable table = builder->build(discrete, args.length);
     shape = {n, n, 4};
-    data = table.data();
+    data.assign(table.data().begin(), table.data().end());
   }
   const double seconds = seconds_since(start);
   write_npy(args.output, shape, data);

@@ -60,13 +60,12 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
   }
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
   if (spec.name == "preint2" || spec.name == "preint2-dual") {
-    if (lighting.enabled)
-      throw Error(spec.name + ": lighting is not supported yet; disable it or use riemann/exact");
     const std::string builder = second_order_builder_name(spec.builder);
     if (spec.name == "preint2")
-      return std::make_unique<Preint2Integrator>(volume, tf, spec.step, spec.table_size, spec.iterations, builder);
+      return std::make_unique<Preint2Integrator>(volume, tf, spec.step, spec.table_size, spec.iterations, builder,
+                                                 lighting);
     const int size = spec.table_size_given ? spec.table_size : Preint2DualIntegrator::kDefaultTableSize;
-    return std::make_unique<Preint2DualIntegrator>(volume, tf, size, spec.iterations, builder);
+    return std::make_unique<Preint2DualIntegrator>(volume, tf, size, spec.iterations, builder, lighting);
   }
   if (is_mesh_method(spec.name))
     throw Error("method '" + spec.name + "' needs a tetrahedral mesh (volume {\"file\": \"x.vtk\"} or " +

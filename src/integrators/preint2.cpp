@@ -2,7 +2,8 @@
 
 #include <algorithm>
 
-#include "ray_steps.hpp"
+#include "slab_policies.hpp"
+#include "vri/core/error.hpp"
 
 namespace vri {
 
@@ -10,26 +11,54 @@ std::string second_order_builder_name(const std::string& builder) {
   return builder == "plain" || builder == "fast" ? builder : "fast";
 }
 
+namespace {
+
+// The table is large (256 MiB at 256 entries a side): ask for the next
+// slab's four (s_f, s_m) rows of entries before compositing this one.
+template <class Sample>
+void prefetch_rows(const SecondOrderTable& table, const std::array<Sample, 3>& s) {
+  const ScalarAxis& axis = table.axis();
+  const auto lower = [&](double v) { return std::min(static_cast<int>(axis.index(v)), axis.n - 2); };
+  const int f = lower(s[0].s), m = lower(s[1].s), b = lower(s[2].s);
+  for (int df = 0; df < 2; ++df)
+    for (int dm = 0; dm < 2; ++dm) __builtin_prefetch(table.entry(f + df, m + dm, b));
+}
+
+}  // namespace
+
 Preint2Integrator::Preint2Integrator(const GridVolume& volume, const TransferFunction& tf, double step,
-                                     int table_size, int iterations, const std::string& builder)
-    : volume_(volume),
-      h_(detail::world_step(volume, step, "preint2")),
-      tf_(tf, table_size),
-      table_(make_second_order_builder(builder)->build(tf_, 2 * h_, iterations)) {}
+                                     int table_size, int iterations, const std::string& builder,
+                                     const Lighting& lighting)
+    : volume_(volume), h_(detail::world_step(volume, step, "preint2")), tf_(tf, table_size) {
+  const auto make = make_second_order_builder(builder);
+  if (lighting.enabled) {
+    if (lighting.mode != "sampled" && lighting.mode != "interpolated")
+      throw Error("preint2: lighting mode must be sampled or interpolated, got '" + lighting.mode + "'");
+    shader_.emplace(lighting, volume);
+  }
+  if (lighting.enabled && lighting.mode == "interpolated")
+    weighted_.emplace(make->build_weighted(tf_, 2 * h_, iterations));
+  else
+    table_.emplace(make->build(tf_, 2 * h_, iterations));
+}
+
+const SecondOrderTable& Preint2Integrator::table() const { return weighted_ ? weighted_->full : *table_; }
 
 Rgba Preint2Integrator::integrate(const Ray& ray) const {
-  // The table is large (256 MiB at 256 entries a side): ask for the next
-  // slab's four (s_f, s_m) rows of entries before compositing this one.
-  const auto prefetch = [&](const std::array<double, 3>& s) {
-    const ScalarAxis& axis = table_.axis();
-    const auto lower = [&](double v) { return std::min(static_cast<int>(axis.index(v)), axis.n - 2); };
-    const int f = lower(s[0]), m = lower(s[1]), b = lower(s[2]);
-    for (int df = 0; df < 2; ++df)
-      for (int dm = 0; dm < 2; ++dm) __builtin_prefetch(table_.entry(f + df, m + dm, b));
-  };
-  return detail::march_uniform_slabs<3>(
-      volume_, tf_, ray, h_, [&](const std::array<double, 3>& s) { return table_.lookup(s[0], s[1], s[2]); },
-      prefetch);
+  using detail::march_uniform_slabs;
+  if (weighted_) {
+    const auto prefetch = [&](const auto& s) {
+      for (const SecondOrderTable* t : {&weighted_->full, &weighted_->middle, &weighted_->back}) prefetch_rows(*t, s);
+    };
+    return march_uniform_slabs<3>(volume_, ray, h_, slabs::Interpolated2{{tf_, *shader_, ray.dir}, *weighted_},
+                                  prefetch);
+  }
+  const auto prefetch = [&](const auto& s) { prefetch_rows(*table_, s); };
+  using Table = SecondOrderTable;
+  if (shader_)
+    return march_uniform_slabs<3>(volume_, ray, h_, slabs::Sampled<3, Table>{*table_, tf_, *shader_, ray.dir},
+                                  prefetch);
+  return march_uniform_slabs<3>(volume_, ray, h_, slabs::Unlit<3, Table>{*table_, tf_}, prefetch);
 }
 
 }  // namespace vri

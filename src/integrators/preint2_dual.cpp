@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "slab_policies.hpp"
 #include "ray_steps.hpp"
+#include "vri/core/error.hpp"
 #include "vri/volume/cell_traversal.hpp"
 
 namespace vri {
@@ -15,33 +17,68 @@ double longest_chord(const GridVolume& volume) {
   return std::sqrt(3.0) * std::max({sp[0], sp[1], sp[2]});
 }
 
-SecondOrderLengthTable build_table(const GridVolume& volume, const TransferFunction& tf, int table_size,
-                                   int iterations, const std::string& builder) {
-  const DiscreteTf discrete(tf, table_size);
-  return build_second_order_length_table(*make_second_order_builder(builder), discrete,
-                                         Preint2DualIntegrator::kLengths, longest_chord(volume), iterations);
+// The shader of a lit scene, after checking the mode (before any table is built).
+std::optional<HeadlightShader> dual_shader(const Lighting& lighting, const GridVolume& volume) {
+  if (!lighting.enabled) return std::nullopt;
+  if (lighting.mode != "sampled" && lighting.mode != "interpolated")
+    throw Error("preint2-dual: lighting mode must be sampled or interpolated, got '" + lighting.mode + "'");
+  return std::optional<HeadlightShader>(std::in_place, lighting, volume);
+}
+
+// Walks the cell segments of `ray` and composites slab(front, middle, back)
+// per segment, each a SlabSample<State> with state = at(p), and its length.
+template <class At, class Slab>
+Rgba march_cells(const GridVolume& volume, const Ray& ray, At&& at, Slab&& slab) {
+  const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
+  if (!iv) return {0, 0, 0, 0};
+  const auto sample_at = [&](Vec3 p) { return detail::SlabSample<decltype(at(p))>{volume.sample(p), at(p)}; };
+  detail::FrontToBack acc;
+  auto front = sample_at(ray.at(iv->t0));
+  for_each_cell_segment(volume, ray, *iv, [&](const CellSegment& seg) {
+    const auto middle = sample_at(ray.at(0.5 * (seg.ta + seg.tb))), back = sample_at(ray.at(seg.tb));
+    const Rgba v = slab(front, middle, back, seg.tb - seg.ta);
+    acc.add(v[0], v[1], v[2], v[3]);
+    front = back;
+    return true;
+  });
+  return acc.result();
 }
 
 }  // namespace
 
 Preint2DualIntegrator::Preint2DualIntegrator(const GridVolume& volume, const TransferFunction& tf, int table_size,
-                                             int iterations, const std::string& builder)
-    : volume_(volume), table_(build_table(volume, tf, table_size, iterations, builder)) {}
+                                             int iterations, const std::string& builder, const Lighting& lighting)
+    : volume_(volume), shader_(dual_shader(lighting, volume)) {
+  const DiscreteTf d(tf, table_size);
+  const auto make = make_second_order_builder(builder);
+  if (shader_ && lighting.mode == "interpolated")
+    weighted_.emplace(build_second_order_weighted_length_tables(*make, d, kLengths, longest_chord(volume), iterations));
+  else
+    table_.emplace(build_second_order_length_table(*make, d, kLengths, longest_chord(volume), iterations));
+}
+
+const SecondOrderLengthTable& Preint2DualIntegrator::table() const { return weighted_ ? weighted_->full : *table_; }
 
 Rgba Preint2DualIntegrator::integrate(const Ray& ray) const {
-  const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
-  if (!iv) return {0, 0, 0, 0};
-  detail::FrontToBack acc;
-  double s_f = volume_.sample(ray.at(iv->t0));
-  for_each_cell_segment(volume_, ray, *iv, [&](const CellSegment& seg) {
-    const double s_m = volume_.sample(ray.at(0.5 * (seg.ta + seg.tb)));
-    const double s_b = volume_.sample(ray.at(seg.tb));
-    const Rgba v = table_.lookup(seg.tb - seg.ta, s_f, s_m, s_b);
-    acc.add(v[0], v[1], v[2], v[3]);
-    s_f = s_b;
-    return true;
-  });
-  return acc.result();
+  if (weighted_)
+    return march_cells(
+        volume_, ray, [&](Vec3 p) { return shader_->at(p, ray.dir); },
+        [&](const auto& f, const auto& m, const auto& b, double l) {
+          const auto look = [&](const SecondOrderLengthTable& t) { return t.lookup(l, f.s, m.s, b.s); };
+          return slabs::lit_lagrange({f.state, m.state, b.state}, look(weighted_->full), look(weighted_->middle),
+                                     look(weighted_->back));
+        });
+  if (shader_)
+    return march_cells(
+        volume_, ray, [&](Vec3 p) { return shader_->gradients().sample(p); },
+        [&](const auto& f, const auto& m, const auto& b, double l) {
+          return slabs::lit_by(shader_->terms(slabs::mean_gradient(std::array{f, m, b}), ray.dir),
+                               table_->lookup(l, f.s, m.s, b.s));
+        });
+  struct Nothing {};
+  return march_cells(
+      volume_, ray, [](Vec3) { return Nothing{}; },
+      [&](const auto& f, const auto& m, const auto& b, double l) { return table_->lookup(l, f.s, m.s, b.s); });
 }
 
 }  // namespace vri

@@ -1,21 +1,29 @@
 #pragma once
 // Uniform ray stepping shared by the pre-integrated ray casters (preint1,
-// preint2): the ray clipped to the volume box is sampled at t0 + i h, cut into
-// slabs of Samples - 1 steps (one table lookup each), and each slab's back
-// sample is the next slab's front. The remaining length r < (Samples - 1) h is
-// the partial slab: it is cut into Samples - 1 equal sub-slabs of length
-// r / (Samples - 1) < h, each integrated exactly under the table's
-// discretisation with the scalar linear along it (exact_slab), so it is neither
-// dropped nor counted twice and adds no length interpolation error.
+// preint2, lit or not): the ray clipped to the volume box is sampled at
+// t0 + i h, cut into slabs of Samples - 1 steps (one table lookup each), and
+// each slab's back sample is the next slab's front. The remaining length
+// r < (Samples - 1) h is the partial slab: it is cut into Samples - 1 equal
+// sub-slabs of length r / (Samples - 1) < h, which the slab policy integrates
+// exactly under the table's discretisation with the scalar linear along each
+// (exact_slab), so it is neither dropped nor counted twice and adds no length
+// interpolation error.
+//
+// Leap (preint1's fast path, fast_path.hpp): with slabs of one step, the march
+// jumps over runs of empty macro cells from sample to sample, so it stays on
+// the same samples and every slab it skips would read zero table entries; it
+// stops once T < termination. Slabs of more steps (preint2) do not leap: their
+// parabola can leave the range of their samples.
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "vri/core/error.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/core/rgba.hpp"
-#include "vri/tables/discrete_tf.hpp"
-#include "vri/tables/slab_integral.hpp"
+#include "vri/volume/empty_space.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri::detail {
@@ -39,51 +47,91 @@ struct FrontToBack {
   Rgba result() const { return {C[0], C[1], C[2], 1 - T}; }
 };
 
-// Marches `ray` in slabs of Samples - 1 steps of h (world units) and composites
-// lookup(s) -> Rgba for every full slab, s holding its Samples scalars front to
-// back, then the partial slab as described above. The next slab's samples are
-// taken before the current lookup and handed to prefetch(s), so a large table
-// can start loading its entries while this slab is composited.
+// One sample of the march: its scalar and what the slab policy keeps there
+// (nothing, a gradient, shader terms).
+template <class State>
+struct SlabSample {
+  double s;
+  State state;
+};
+
+// Marches `ray` in slabs of Samples - 1 steps of h (world units) and
+// composites what `policy` makes of them:
+//   State at(Vec3 p)                                         what a sample carries
+//   Rgba slab(const std::array<SlabSample<State>, Samples>&) a full slab, samples front to back
+//   Rgba last(const SlabSample<State>& front, const SlabSample<State>& back, double length)
+//                                                            one sub-slab of the partial slab
+// Each sample is taken once and serves the slabs on both sides of it. The
+// next slab's samples are taken before the current slab is composited and
+// handed to prefetch(samples), so a large table can start loading its entries.
 struct NoPrefetch {
   template <class S>
   void operator()(const S&) const {}
 };
 
-template <int Samples, class Lookup, class Prefetch = NoPrefetch>
-Rgba march_uniform_slabs(const GridVolume& volume, const DiscreteTf& tf, const Ray& ray, double h, Lookup&& lookup,
-                         Prefetch&& prefetch = {}) {
+struct Leap {
+  const EmptySpace* space = nullptr;  // null: no skipping
+  double termination = 0;             // 0: never stop early
+};
+
+template <int Samples, class Policy, class Prefetch = NoPrefetch>
+Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, const Policy& policy,
+                         Prefetch&& prefetch = {}, const Leap& leap = {}) {
   static_assert(Samples >= 2);
   constexpr int steps = Samples - 1;
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const double slab = steps * h;
   const long long full = static_cast<long long>(std::floor(iv->length() / slab));
-  using Scalars = std::array<double, Samples>;
-  const auto fill = [&](Scalars& s, long long k) {
-    for (int i = 1; i < Samples; ++i) s[i] = volume.sample(ray.at(iv->t0 + (k * steps + i) * h));
+  using Sample = SlabSample<decltype(policy.at(Vec3{}))>;
+  using Slab = std::array<Sample, Samples>;
+  const auto sample_at = [&](double t) {
+    const Vec3 p = ray.at(t);
+    return Sample{volume.sample(p), policy.at(p)};
+  };
+  const auto fill = [&](Slab& s, long long k) {
+    for (int i = 1; i < Samples; ++i) s[i] = sample_at(iv->t0 + (k * steps + i) * h);
   };
   FrontToBack acc;
-  Scalars s{}, next{};
-  s[0] = volume.sample(ray.at(iv->t0));
+  Slab s{}, next{};
+  s[0] = sample_at(iv->t0);
   if (full > 0) fill(s, 0);
+  double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
   for (long long k = 0; k < full; ++k) {
+    if (acc.T < leap.termination) return acc.result();
+    if constexpr (Samples == 2) {
+      const double t = iv->t0 + k * h;
+      if (leap.space && t >= t_check) {
+        const EmptySpace::Run run = leap.space->run(ray, t, iv->t1);
+        t_check = run.t_end;
+        // In an empty run the slabs between samples k .. j read zero entries.
+        const long long j = run.empty ? std::min(full, static_cast<long long>(std::floor((run.t_end - iv->t0) / h))) : k;
+        if (j > k) {
+          k = j;
+          s[0] = sample_at(iv->t0 + k * h);
+          if (k == full) break;
+          fill(s, k);
+        }
+      }
+    }
     next[0] = s[steps];
     if (k + 1 < full) {
       fill(next, k + 1);
       prefetch(next);
     }
-    const Rgba v = lookup(s);
+    const Rgba v = policy.slab(s);
     acc.add(v[0], v[1], v[2], v[3]);
     s = next;
   }
+  if (acc.T < leap.termination) return acc.result();
   const double t_rest = iv->t0 + full * steps * h;
   const double sub = (iv->t1 - t_rest) / steps;
   if (sub > 0)
     for (int i = 1; i <= steps; ++i) {
-      const double s_back = volume.sample(ray.at(i == steps ? iv->t1 : t_rest + i * sub));
-      const SlabRgba v = exact_slab(tf, s[0], s_back, sub);
-      acc.add(v.r, v.g, v.b, v.a);
-      s[0] = s_back;
+      const Sample back = sample_at(i == steps ? iv->t1 : t_rest + i * sub);
+      const Rgba v = policy.last(s[0], back, sub);
+      acc.add(v[0], v[1], v[2], v[3]);
+      s[0] = back;
     }
   return acc.result();
 }

@@ -15,13 +15,6 @@ namespace {
 constexpr double kX[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
 constexpr double kW[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
 
-void store(float* e, const SlabRgba& v) {
-  e[0] = static_cast<float>(v.r);
-  e[1] = static_cast<float>(v.g);
-  e[2] = static_cast<float>(v.b);
-  e[3] = static_cast<float>(v.a);
-}
-
 }  // namespace
 
 SlabRgba quadrature_piece(const TfSample& p, const TfSample& q, double d) {

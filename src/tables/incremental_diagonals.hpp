@@ -34,8 +34,12 @@ struct Pieces {
   double thickest(int k) const { return std::max(tau[k], tau[k + 1]); }
 };
 
+using Entry = std::array<float, 4>;
+
 // Scratch of one thread, fully overwritten by each weights() / composite(),
-// so results do not depend on which thread ran what.
+// so results do not depend on which thread ran what. The loops are compiled
+// twice (AVX2 + FMA and the x86-64 baseline, target_clones) and picked at
+// run time: one machine always runs the same code, whatever the thread count.
 class DiagonalSweep {
  public:
   explicit DiagonalSweep(int n);
@@ -44,84 +48,35 @@ class DiagonalSweep {
   void weights(const Pieces& pieces, double length, int m);
 
   // Composites the colours c[0 .. n-1] (r, g, b of TfSample; tau is the
-  // pieces') over diagonal m (after weights(..., m)) and calls
-  // store(i, upper, lower) with upper = entry (i, i+m), lower = entry (i+m, i).
-  template <class Store>
-  void composite(const TfSample* c, int m, Store&& store);
+  // pieces') over diagonal m (after weights(..., m)): upper[i] = entry
+  // (i, i+m), lower[i] = entry (i+m, i), i = 0 .. n-1-m; or straight into
+  // the table's entries, rounded to float.
+  void composite(const TfSample* c, int m, SlabRgba* upper, SlabRgba* lower);
+  void composite(const TfSample* c, int m, PreintegrationTable& table);
 
- private:
-  // Piece weights as separate arrays, so the series loop vectorises.
-  std::vector<double> fp_, fq_, bq_, bp_, alpha_;
-  // Bins are pieces [b m, (b+1) m) (Lum et al. 2004, Fig. 5). Within each
-  // bin, for piece k:
+  // Per piece k (table scalars k, k+1): the weights of piece_weights.hpp,
+  // planar so the series loop vectorises.
+  struct Weights {
+    std::vector<double> fp, fq, bq, bp, alpha;
+  };
+  // Per piece, each a whole premultiplied (C, alpha) (SlabRgba layout, one
+  // AVX2 register): the piece itself, forward (front = lower scalar) and
+  // backward (front = higher scalar), and its subranges within its bin
+  // (pieces [b m, (b+1) m), Lum et al. 2004, Fig. 5):
   //   head[k] = pieces bin_start..k   (left-hand subrange grown to the right)
   //   tail[k] = pieces k..bin_end-1   (right-hand subrange grown to the left)
-  // forward (front = lower scalar) and backward (front = higher scalar).
-  std::vector<SlabRgba> head_f_, tail_f_, head_b_, tail_b_;
+  struct Subranges {
+    std::vector<SlabRgba> piece_f, piece_b, head_f, tail_f, head_b, tail_b;
+  };
+
+ private:
+  Weights w_;
+  Subranges s_;
 };
-
-template <class Store>
-void DiagonalSweep::composite(const TfSample* c, int m, Store&& store) {
-  const int count = static_cast<int>(fp_.size()), n = count + 1;
-  for (int k = 0; k < count; ++k) {
-    const TfSample& p = c[k];
-    const TfSample& q = c[k + 1];
-    const double fp = fp_[k], fq = fq_[k], bq = bq_[k], bp = bp_[k], alpha = alpha_[k];
-    // Built in registers, then stored: chained stores would be reloaded.
-    const SlabRgba f{p.r * fp + q.r * fq, p.g * fp + q.g * fq, p.b * fp + q.b * fq, alpha};
-    const SlabRgba b{q.r * bq + p.r * bp, q.g * bq + p.g * bp, q.b * bq + p.b * bp, alpha};
-    head_f_[k] = tail_f_[k] = f;
-    head_b_[k] = tail_b_[k] = b;
-  }
-  for (int start = 0; start < count; start += m) {
-    const int end = std::min(start + m, count);
-    // Four independent chains in one loop, so they overlap in the pipeline.
-    for (int h = start + 1, t = end - 2; h < end; ++h, --t) {
-      head_f_[h] = over(head_f_[h - 1], head_f_[h]);
-      head_b_[h] = over(head_b_[h], head_b_[h - 1]);
-      tail_f_[t] = over(tail_f_[t], tail_f_[t + 1]);
-      tail_b_[t] = over(tail_b_[t + 1], tail_b_[t]);
-    }
-  }
-  // Entry (i, i+m) covers pieces i .. e = i+m-1: a whole bin, or the tail of
-  // one bin followed by the head of the next.
-  for (int i = 0, in_bin = 0; i + m < n; ++i, in_bin = in_bin + 1 == m ? 0 : in_bin + 1) {
-    const int e = i + m - 1;
-    if (in_bin == 0)  // i % m == 0, without a division per entry
-      store(i, tail_f_[i], tail_b_[i]);
-    else
-      store(i, over(tail_f_[i], head_f_[e]), over(head_b_[e], tail_b_[i]));
-  }
-}
-
-using Entry = std::array<float, 4>;
 
 inline Entry to_entry(double r, double g, double b, double a) {
   return {static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), static_cast<float>(a)};
 }
 inline Entry to_entry(const SlabRgba& v) { return to_entry(v.r, v.g, v.b, v.a); }
-
-// Diagonals are built kGroup at a time and stored row by row: entries
-// (i, i+m0 .. i+m0+kGroup-1) are adjacent in memory, one diagonal is not.
-inline constexpr int kGroup = 32;
-
-// One group's entries, diagonal by diagonal: upper (i, i+m) and lower (i+m, i)
-// at (m - m0) n + i.
-struct GroupBuffer {
-  std::vector<Entry> upper, lower;
-  explicit GroupBuffer(int n) : upper(std::size_t(kGroup) * n), lower(std::size_t(kGroup) * n) {}
-  Entry* upper_of(int n, int m_offset) { return &upper[std::size_t(m_offset) * n]; }
-  Entry* lower_of(int n, int m_offset) { return &lower[std::size_t(m_offset) * n]; }
-  // Copies diagonals m0 .. m1-1 into the table, row by row.
-  void store(int m0, int m1, PreintegrationTable& table) const {
-    const int n = table.size();
-    const auto at = [n](int m_offset, int i) { return std::size_t(m_offset) * n + i; };
-    for (int r = 0; r < n; ++r)
-      for (int m = m0; m < m1; ++m) {
-        if (r + m < n) std::copy_n(upper[at(m - m0, r)].data(), 4, table.entry(r, r + m));
-        if (r - m >= 0) std::copy_n(lower[at(m - m0, r - m)].data(), 4, table.entry(r, r - m));
-      }
-  }
-};
 
 }  // namespace vri

@@ -21,7 +21,7 @@ Bracket bracket(double u, int n) {
 }  // namespace
 
 PreintegrationTable::PreintegrationTable(const ScalarAxis& axis, double length)
-    : axis_(axis), length_(length), data_(4 * static_cast<std::size_t>(axis.n) * axis.n, 0.0f) {}
+    : axis_(axis), length_(length), data_(4 * static_cast<std::size_t>(axis.n) * axis.n) {}
 
 Rgba PreintegrationTable::lookup(double s_f, double s_b) const {
   const Bracket f = bracket(axis_.index(s_f), axis_.n), b = bracket(axis_.index(s_b), axis_.n);

@@ -43,23 +43,47 @@ PaddedTf pad_tf(const DiscreteTf& tf, double step) {
 }
 
 // What composite_lanes returns per lane: the colour seen from the front
-// (rgb[0..2]), from the back (rgb[3..5]) and alpha (the same both ways).
+// (rgb[0..2]), from the back (rgb[3..5]) and alpha (the same both ways); with
+// weights, weighted[v][w] = (D.rgb, S) of view v (0 front, 1 back) for that
+// view's middle (w = 0) and back (w = 1) Lagrange weight.
 struct LaneResults {
   float rgb[6][kLanes];
   float alpha[kLanes];
+  float weighted[2][2][4][kLanes];
 };
+
+// The Lagrange weights at the sub-step midpoints t_k (second_order_weighted.hpp):
+// front[k] = L_f(t_k), middle[k] = L_m(t_k), back[k] = L_b(t_k).
+struct SubstepWeights {
+  std::vector<float> front, middle, back;
+};
+
+SubstepWeights substep_weights(int iterations) {
+  SubstepWeights w;
+  for (int k = 0; k < iterations; ++k) {
+    const double t = (k + 0.5) / iterations;
+    w.front.push_back(static_cast<float>(lagrange_front(t)));
+    w.middle.push_back(static_cast<float>(lagrange_middle(t)));
+    w.back.push_back(static_cast<float>(lagrange_back(t)));
+  }
+  return w;
+}
 
 // The SIMD primitive: 8 entries (lanes) through K sub-steps. Sub-step k of
 // lane j samples the padded arrays at index[k] + j with weight weight[k].
 // The same samples read backwards are the entry (s_b, s_m, s_f), so the
 // reverse colour is accumulated too ("under": C = c_k a_k + (1 - a_k) C),
-// which halves the work. Vectors live only inside this function (no vector
-// arguments, so no ABI differences between the clones).
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_lanes(const PaddedTf& tf,
-                                                                               const int* index,
-                                                                               const float* weight,
-                                                                               int iterations, LaneResults& out) {
+// which halves the work. Read backwards, u becomes 1 - u: the back view's
+// middle weight is L_m(t_k), its back weight L_f(t_k). The unweighted sums
+// are the same operations with or without weights (the same bytes). Vectors
+// live only inside this function (no vector arguments, so no ABI differences
+// between the clones).
+template <bool Weighted>
+__attribute__((always_inline)) inline void composite_lanes_impl(const PaddedTf& tf, const int* index,
+                                                                const float* weight, const SubstepWeights* lagrange,
+                                                                int iterations, LaneResults& out) {
   F8 T = F8{} + 1.0f, C[6] = {};
+  F8 W[2][2][4] = {};
   for (int k = 0; k < iterations; ++k) {
     const int i = index[k];
     const float w = weight[k];
@@ -91,12 +115,44 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_lanes
       C[c] += T * emitted;
       C[c + 3] = emitted + e * C[c + 3];
     }
+    if constexpr (Weighted) {
+      // Front view: weights (L_m, L_b) on T_k x; back view: (L_m, L_f) "under".
+      const float front_view[2] = {lagrange->middle[k], lagrange->back[k]};
+      const float back_view[2] = {lagrange->middle[k], lagrange->front[k]};
+      for (int q = 0; q < 2; ++q) {
+        const F8 Tw = T * front_view[q];
+        for (int c = 0; c < 3; ++c) {
+          const F8 emitted = a * v[c + 1];
+          W[0][q][c] += Tw * emitted;
+          W[1][q][c] = back_view[q] * emitted + e * W[1][q][c];
+        }
+        W[0][q][3] += Tw * a;
+        W[1][q][3] = back_view[q] * a + e * W[1][q][3];
+      }
+    }
     T *= e;
   }
   for (int j = 0; j < kLanes; ++j) {
     for (int c = 0; c < 6; ++c) out.rgb[c][j] = C[c][j];
     out.alpha[j] = 1.0f - T[j];
+    if constexpr (Weighted)
+      for (int view = 0; view < 2; ++view)
+        for (int q = 0; q < 2; ++q)
+          for (int c = 0; c < 4; ++c) out.weighted[view][q][c][j] = W[view][q][c][j];
   }
+}
+
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_lanes(const PaddedTf& tf,
+                                                                               const int* index,
+                                                                               const float* weight,
+                                                                               int iterations, LaneResults& out) {
+  composite_lanes_impl<false>(tf, index, weight, nullptr, iterations, out);
+}
+
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_lanes_weighted(
+    const PaddedTf& tf, const int* index, const float* weight, const SubstepWeights& lagrange, int iterations,
+    LaneResults& out) {
+  composite_lanes_impl<true>(tf, index, weight, &lagrange, iterations, out);
 }
 
 void store(float* e, const LaneResults& r, int first_channel, int lane) {
@@ -104,14 +160,18 @@ void store(float* e, const LaneResults& r, int first_channel, int lane) {
   e[3] = r.alpha[lane];
 }
 
-}  // namespace
+void store_weighted(float* e, const LaneResults& r, int view, int weight, int lane) {
+  for (int c = 0; c < 4; ++c) e[c] = r.weighted[view][weight][c][lane];
+}
 
-SecondOrderTable FastSecondOrderBuilder::build(const DiscreteTf& tf, double length, int iterations) const {
-  check_slab_length(length);
-  check_iterations(iterations);
-  SecondOrderTable table(tf.axis(), length, iterations);
+// Walks every entry as build() describes and hands each to
+// store(f, m, b, view, lane, results): view 0 is the entry (f, f + d1, f + d2)
+// of lane f - f0, view 1 its reverse (f + d2, f + d1, f) when d2 > 0.
+template <bool Weighted, class Store>
+void walk_diagonals(const DiscreteTf& tf, double length, int iterations, Store&& store_entry) {
   const int n = tf.size();
   const PaddedTf padded = pad_tf(tf, length / iterations);
+  const SubstepWeights lagrange = Weighted ? substep_weights(iterations) : SubstepWeights{};
   // One task per d1 = m - f; every entry is computed by the same lanes code
   // whatever the partition, so the bytes do not depend on the thread count.
   tbb::parallel_for(-(n - 1), n, [&](int d1) {
@@ -132,16 +192,43 @@ SecondOrderTable FastSecondOrderBuilder::build(const DiscreteTf& tf, double leng
       }
       for (int f0 = f_lo; f0 <= f_hi; f0 += kLanes) {
         for (int k = 0; k < iterations; ++k) index[k] = offset[k] + f0;
-        composite_lanes(padded, index.data(), weight.data(), iterations, out);
+        if constexpr (Weighted)
+          composite_lanes_weighted(padded, index.data(), weight.data(), lagrange, iterations, out);
+        else
+          composite_lanes(padded, index.data(), weight.data(), iterations, out);
         for (int j = 0; j < kLanes && f0 + j <= f_hi; ++j) {
           const int f = f0 + j;
-          store(table.entry(f, f + d1, f + d2), out, 0, j);
-          if (d2 > 0) store(table.entry(f + d2, f + d1, f), out, 3, j);
+          store_entry(f, f + d1, f + d2, 0, j, out);
+          if (d2 > 0) store_entry(f + d2, f + d1, f, 1, j, out);
         }
       }
     }
   });
+}
+
+}  // namespace
+
+SecondOrderTable FastSecondOrderBuilder::build(const DiscreteTf& tf, double length, int iterations) const {
+  check_slab_length(length);
+  check_iterations(iterations);
+  SecondOrderTable table(tf.axis(), length, iterations);
+  walk_diagonals<false>(tf, length, iterations, [&](int f, int m, int b, int view, int j, const LaneResults& out) {
+    store(table.entry(f, m, b), out, 3 * view, j);
+  });
   return table;
+}
+
+SecondOrderWeightedTables FastSecondOrderBuilder::build_weighted(const DiscreteTf& tf, double length,
+                                                                 int iterations) const {
+  check_slab_length(length);
+  check_iterations(iterations);
+  SecondOrderWeightedTables t(tf.axis(), length, iterations);
+  walk_diagonals<true>(tf, length, iterations, [&](int f, int m, int b, int view, int j, const LaneResults& out) {
+    store(t.full.entry(f, m, b), out, 3 * view, j);
+    store_weighted(t.middle.entry(f, m, b), out, view, 0, j);
+    store_weighted(t.back.entry(f, m, b), out, view, 1, j);
+  });
+  return t;
 }
 
 }  // namespace vri

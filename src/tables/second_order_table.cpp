@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "tables/second_order_substeps.hpp"
 #include "tables/trilinear.hpp"
 #include "vri/core/error.hpp"
 #include "vri/tables/second_order_fast.hpp"
@@ -36,14 +37,9 @@ Rgba SecondOrderTable::lookup(double s_f, double s_m, double s_b) const {
 
 SlabRgba second_order_entry(const DiscreteTf& tf, double u_f, double u_m, double u_b, double length,
                             int iterations) {
-  const double A = 2 * u_f - 4 * u_m + 2 * u_b, B = -3 * u_f + 4 * u_m - u_b, C = u_f;
-  const double top = tf.size() - 1, step = length / iterations;
   SlabRgba acc;
-  for (int k = 0; k < iterations; ++k) {
-    const double t = (k + 0.5) / iterations;
-    const double u = std::clamp((A * t + B) * t + C, 0.0, top);
-    acc = over(acc, homogeneous_slab(tf.at_index(u), step));
-  }
+  detail::for_each_second_order_substep(tf, u_f, u_m, u_b, length, iterations,
+                                        [&](double, const SlabRgba& v) { acc = over(acc, v); });
   return acc;
 }
 
@@ -81,15 +77,20 @@ std::size_t SecondOrderLengthTable::bytes() const {
   return total;
 }
 
-SecondOrderLengthTable build_second_order_length_table(const SecondOrderBuilder& builder, const DiscreteTf& tf,
-                                                       int lengths, double max_length, int iterations) {
+void check_length_table(int lengths, double max_length, int n, int tables) {
   if (lengths < 2) throw Error("--lengths must be >= 2, got " + std::to_string(lengths));
   if (!(max_length > 0) || !std::isfinite(max_length))
     throw Error("--max-length must be a positive number, got " + std::to_string(max_length));
+  if (static_cast<std::size_t>(tables) * lengths * cube(n) > kMaxSecondOrderEntries)
+    throw Error("a second-order table of " + (tables > 1 ? std::to_string(tables) + " x " : std::string()) +
+                std::to_string(lengths) + " lengths x " + std::to_string(n) + "^3 entries exceeds " +
+                std::to_string(kMaxSecondOrderEntries) + " entries (1 GiB)");
+}
+
+SecondOrderLengthTable build_second_order_length_table(const SecondOrderBuilder& builder, const DiscreteTf& tf,
+                                                       int lengths, double max_length, int iterations) {
+  check_length_table(lengths, max_length, tf.size(), 1);
   check_iterations(iterations);
-  if (static_cast<std::size_t>(lengths) * cube(tf.size()) > kMaxSecondOrderEntries)
-    throw Error("a second-order table of " + std::to_string(lengths) + " lengths x " + std::to_string(tf.size()) +
-                "^3 entries exceeds " + std::to_string(kMaxSecondOrderEntries) + " entries (1 GiB)");
   std::vector<SecondOrderTable> slices;
   // Length 0 is the empty slab; builders take only positive lengths. The
   // builders are parallel inside, so the lengths go one after the other.

@@ -38,35 +38,29 @@ SlabWeights split(const SlabRgba& c1, const SlabRgba& back) {
 
 struct Scratch {
   DiagonalSweep sweep;
-  std::vector<SlabRgba> c1_up, c1_lo, g_up, g_lo;  // one diagonal of C_1 and of the ramped colours
-  GroupBuffer front, back;
-  explicit Scratch(int n) : sweep(n), c1_up(n), c1_lo(n), g_up(n), g_lo(n), front(n), back(n) {}
+  // One diagonal of C_1, of the ramped colours and of the ramped white.
+  std::vector<SlabRgba> c1_up, c1_lo, g_up, g_lo, gs_up, gs_lo;
+  explicit Scratch(int n) : sweep(n), c1_up(n), c1_lo(n), g_up(n), g_lo(n), gs_up(n), gs_lo(n) {}
 };
 
-void build_group(const DiscreteTf& tf, const Pieces& pieces, const std::vector<TfSample>& ramped,
-                 const std::vector<TfSample>& white_ramped, double length, int m0, Scratch& s, WeightedTables& t) {
-  const int n = tf.size(), m1 = std::min(m0 + kGroup, n);
-  for (int m = m0; m < m1; ++m) {
-    s.sweep.weights(pieces, length, m);
-    s.sweep.composite(&tf[0], m, [&](int i, const SlabRgba& u, const SlabRgba& l) { s.c1_up[i] = u, s.c1_lo[i] = l; });
-    s.sweep.composite(ramped.data(), m, [&](int i, const SlabRgba& u, const SlabRgba& l) { s.g_up[i] = u, s.g_lo[i] = l; });
-    // C_W = (C_G - f C_1) / (j - f) for front index f, back index j: above
-    // the diagonal f = i, j - f = m; below it f = i + m, j - f = -m.
-    const auto back = [m](const SlabRgba& g, double gs, const SlabRgba& c1, double f, double sign) {
-      const double w = sign / m;
-      return SlabRgba{(g.r - f * c1.r) * w, (g.g - f * c1.g) * w, (g.b - f * c1.b) * w, (gs - f * c1.a) * w};
-    };
-    Entry *uf = s.front.upper_of(n, m - m0), *ub = s.back.upper_of(n, m - m0);
-    Entry *lf = s.front.lower_of(n, m - m0), *lb = s.back.lower_of(n, m - m0);
-    s.sweep.composite(white_ramped.data(), m, [&](int i, const SlabRgba& gs_up, const SlabRgba& gs_lo) {
-      const SlabWeights up = split(s.c1_up[i], back(s.g_up[i], gs_up.r, s.c1_up[i], i, 1));
-      const SlabWeights lo = split(s.c1_lo[i], back(s.g_lo[i], gs_lo.r, s.c1_lo[i], i + m, -1));
-      uf[i] = to_entry(up.front), ub[i] = to_entry(up.back);
-      lf[i] = to_entry(lo.front), lb[i] = to_entry(lo.back);
-    });
+// Diagonal m of both tables.
+void build_diagonal(const DiscreteTf& tf, const Pieces& pieces, const std::vector<TfSample>& ramped,
+                    const std::vector<TfSample>& white_ramped, double length, int m, Scratch& s, WeightedTables& t) {
+  const int n = tf.size();
+  s.sweep.weights(pieces, length, m);
+  s.sweep.composite(&tf[0], m, s.c1_up.data(), s.c1_lo.data());
+  s.sweep.composite(ramped.data(), m, s.g_up.data(), s.g_lo.data());
+  s.sweep.composite(white_ramped.data(), m, s.gs_up.data(), s.gs_lo.data());
+  // C_W = (C_G - f C_1) / (j - f) for front index f, back index j: above
+  // the diagonal f = i, j - f = m; below it f = i + m, j - f = -m.
+  const auto back = [m](const SlabRgba& g, double gs, const SlabRgba& c1, double f, double sign) {
+    const double w = sign / m;
+    return SlabRgba{(g.r - f * c1.r) * w, (g.g - f * c1.g) * w, (g.b - f * c1.b) * w, (gs - f * c1.a) * w};
+  };
+  for (int i = 0; i + m < n; ++i) {
+    store_packed(t, i, i + m, split(s.c1_up[i], back(s.g_up[i], s.gs_up[i].r, s.c1_up[i], i, 1)));
+    store_packed(t, i + m, i, split(s.c1_lo[i], back(s.g_lo[i], s.gs_lo[i].r, s.c1_lo[i], i + m, -1)));
   }
-  s.front.store(m0, m1, t.front);
-  s.back.store(m0, m1, t.back);
 }
 
 }  // namespace
@@ -89,10 +83,7 @@ WeightedTables build_weighted_tables(const DiscreteTf& tf, double length) {
   const Pieces pieces(tf);
   // As IncrementalBuilder: per-thread scratch, fully overwritten before it is read.
   tbb::enumerable_thread_specific<Scratch> scratch([n] { return Scratch(n); });
-  const int groups = (n - 1 + kGroup - 1) / kGroup;
-  tbb::parallel_for(0, groups, [&](int g) {
-    build_group(tf, pieces, ramped, white_ramped, length, 1 + g * kGroup, scratch.local(), t);
-  });
+  tbb::parallel_for(1, n, [&](int m) { build_diagonal(tf, pieces, ramped, white_ramped, length, m, scratch.local(), t); });
   return t;
 }
 

@@ -175,7 +175,8 @@ TEST(Preint2, RefusesBadParameters) {
   for (const char* name : {"preint2", "preint2-dual"}) {
     expect_refused({.name = name, .table_size = 16, .iterations = 0}, {}, "iterations must be in [1, 4096]");
     expect_refused({.name = name, .table_size = 16, .iterations = 4097}, {}, "iterations must be in [1, 4096]");
-    expect_refused({.name = name, .table_size = 16, .iterations = 4}, {.enabled = true}, "lighting");
+    expect_refused({.name = name, .table_size = 16, .iterations = 4}, {.enabled = true, .mode = "phong"},
+                   "lighting mode must be");
   }
   expect_refused({.name = "preint2", .step = 0, .table_size = 16}, {}, "step");
   expect_refused({.name = "preint2-dual", .table_size = 129, .table_size_given = true}, {}, "exceeds");

@@ -142,9 +142,11 @@ TEST(TableBuilders, SameBytesForAnyThreadCount) {
     std::vector<float> one, many;
     {
       tbb::global_control only(tbb::global_control::max_allowed_parallelism, 1);
-      one = builder->build(tf, 1.0).data();
+      const PreintegrationTable t = builder->build(tf, 1.0);
+      one.assign(t.data().begin(), t.data().end());
     }
-    many = builder->build(tf, 1.0).data();
+    const PreintegrationTable t = builder->build(tf, 1.0);
+    many.assign(t.data().begin(), t.data().end());
     EXPECT_EQ(one, many) << name;
   }
 }

@@ -4,7 +4,8 @@
 // where the kernel allows (madvise). Why: a 256 MiB second-order table
 // filled through std::vector spent half its build time in memset and 4 KiB
 // page faults; this way the builders' own writes fault 2 MiB at a time, in
-// parallel. Copies copy the contents.
+// parallel. From 1 MiB up the mapping is whole, aligned 2 MiB pages (a
+// first-order table of N = 256 is 1 MiB). Copies copy the contents.
 #include <cstddef>
 
 namespace vri {

@@ -50,9 +50,6 @@ class Preint1Integrator final : public Integrator {
   std::optional<HeadlightShader> shader_;     // when lit
   std::optional<WeightedTables> weighted_;    // when lit and interpolated
   detail::Skipping fast_;
-
-  template <class Policy>
-  Rgba march(const Ray& ray, const Policy& policy) const;
 };
 
 }  // namespace vri

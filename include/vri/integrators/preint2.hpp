@@ -17,11 +17,22 @@
 // discretisation with the scalar linear along it (ray_steps.hpp, shared with
 // preint1): no table with lengths, no slab dropped or counted twice, and the
 // result is continuous in the ray length (r -> 0 adds nothing).
+//
+// Lighting (SPEC §5, `lighting.mode`; docs/LIGHTING.md, "Second order"):
+// `sampled` lights each slab's pre-integrated colour with one normal, the
+// mean of its three samples' gradients; `interpolated` interpolates the
+// shading quadratically through the three samples with the weighted tables
+// of second_order_weighted.hpp (three tables: 3x the memory, 768 MiB at 256
+// entries a side). The partial last slab is lit as preint1 lights its own.
+#include <optional>
 #include <string>
 
 #include "vri/integrators/integrator.hpp"
+#include "vri/shading/headlight_shader.hpp"
+#include "vri/shading/lighting.hpp"
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/second_order_table.hpp"
+#include "vri/tables/second_order_weighted.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri {
@@ -35,19 +46,23 @@ class Preint2Integrator final : public Integrator {
  public:
   // step h in voxel units (1e-4 .. 1e4; slabs are 2h long); the table has
   // table_size entries a side, each entry the parabola stepped `iterations`
-  // times (1 .. kMaxSecondOrderIterations), built by the named second-order builder.
+  // times (1 .. kMaxSecondOrderIterations), built by the named second-order
+  // builder. Throws vri::Error for a lighting mode other than sampled or interpolated.
   Preint2Integrator(const GridVolume& volume, const TransferFunction& tf, double step, int table_size,
-                    int iterations, const std::string& builder);
+                    int iterations, const std::string& builder, const Lighting& lighting = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "preint2"; }
 
-  const SecondOrderTable& table() const { return table_; }
+  // The unweighted table (weighted tables' `full` when interpolated).
+  const SecondOrderTable& table() const;
 
  private:
   const GridVolume& volume_;
   double h_;  // world units
   DiscreteTf tf_;
-  SecondOrderTable table_;
+  std::optional<SecondOrderTable> table_;              // unless interpolated
+  std::optional<SecondOrderWeightedTables> weighted_;  // when lit and interpolated
+  std::optional<HeadlightShader> shader_;              // when lit
 };
 
 }  // namespace vri

@@ -13,11 +13,20 @@
 // Memory: kLengths * table_size^3 RGBA float32 entries, 128 MiB at the
 // default table_size 64; over kMaxSecondOrderEntries (1 GiB, table_size > 128)
 // build_second_order_length_table refuses before building anything.
+//
+// Lighting (SPEC §5, as preint2): `sampled`, one normal per slab, the mean of
+// the three samples' gradients; `interpolated`, the shading quadratic through
+// the three samples, with the weighted tables of second_order_weighted.hpp at
+// every length: 3x the memory, 384 MiB at the default table_size 64.
+#include <optional>
 #include <string>
 
 #include "vri/integrators/integrator.hpp"
+#include "vri/shading/headlight_shader.hpp"
+#include "vri/shading/lighting.hpp"
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/second_order_table.hpp"
+#include "vri/tables/second_order_weighted.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri {
@@ -28,17 +37,21 @@ class Preint2DualIntegrator final : public Integrator {
   static constexpr int kLengths = 32;
 
   // Throws vri::Error when the table would exceed kMaxSecondOrderEntries or
-  // the iterations are out of range (see preint2.hpp for the builder).
+  // the iterations are out of range (see preint2.hpp for the builder), or for
+  // a lighting mode other than sampled or interpolated.
   Preint2DualIntegrator(const GridVolume& volume, const TransferFunction& tf, int table_size, int iterations,
-                        const std::string& builder);
+                        const std::string& builder, const Lighting& lighting = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "preint2-dual"; }
 
-  const SecondOrderLengthTable& table() const { return table_; }
+  // The unweighted table (the weighted tables' `full` when interpolated).
+  const SecondOrderLengthTable& table() const;
 
  private:
   const GridVolume& volume_;
-  SecondOrderLengthTable table_;
+  std::optional<HeadlightShader> shader_;                   // when lit
+  std::optional<SecondOrderLengthTable> table_;             // unless interpolated
+  std::optional<SecondOrderWeightedLengthTables> weighted_;  // when lit and interpolated
 };
 
 }  // namespace vri

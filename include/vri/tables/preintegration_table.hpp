@@ -5,9 +5,11 @@
 // LengthTable adds the length axis, indexed [l][s_f][s_b] with lengths
 // max_length * m / (M - 1) (SPEC §10). Lookups interpolate linearly in every axis.
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "vri/core/rgba.hpp"
+#include "vri/core/zeroed_floats.hpp"
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/slab_table.hpp"
 
@@ -23,7 +25,7 @@ class PreintegrationTable {
   // Entry (f, b): 4 floats r, g, b, alpha.
   float* entry(int f, int b) { return &data_[4 * (static_cast<std::size_t>(f) * axis_.n + b)]; }
   const float* entry(int f, int b) const { return &data_[4 * (static_cast<std::size_t>(f) * axis_.n + b)]; }
-  const std::vector<float>& data() const { return data_; }
+  std::span<const float> data() const { return {data_.data(), data_.size()}; }
 
   // Bilinear in the continuous indices of s_f and s_b.
   Rgba lookup(double s_f, double s_b) const;
@@ -31,7 +33,9 @@ class PreintegrationTable {
  private:
   ScalarAxis axis_;
   double length_;
-  std::vector<float> data_;
+  // Zero until written; 2 MiB pages: the builders' own writes fault the
+  // table in, without a memset first (zeroed_floats.hpp).
+  ZeroedFloats data_;
 };
 
 // The table the mesh methods (tet-raycast, pt) sample, whatever builder made it.

@@ -17,7 +17,7 @@
 // It works in float32 with a polynomial exp (relative error ~1e-7) where
 // `plain` works in double: |fast - plain| <= 1e-6 + 3e-8 K per channel
 // (measured in docs/SECOND_ORDER.md). Bytes are the same for any thread count.
-#include "vri/tables/second_order_table.hpp"
+#include "vri/tables/second_order_weighted.hpp"
 
 namespace vri {
 
@@ -25,6 +25,7 @@ class FastSecondOrderBuilder final : public SecondOrderBuilder {
  public:
   std::string_view name() const override { return "fast"; }
   SecondOrderTable build(const DiscreteTf& tf, double length, int iterations) const override;
+  SecondOrderWeightedTables build_weighted(const DiscreteTf& tf, double length, int iterations) const override;
 };
 
 }  // namespace vri

@@ -4,7 +4,7 @@
 // et al. 2008, Eq. 2, iterated as in their §6.2), in double precision,
 // parallel over s_f (oneTBB).
 // O(N^3 K); 256^3 at K = 64 takes minutes of CPU, like the paper's 165 s.
-#include "vri/tables/second_order_table.hpp"
+#include "vri/tables/second_order_weighted.hpp"
 
 namespace vri {
 
@@ -12,6 +12,7 @@ class PlainSecondOrderBuilder final : public SecondOrderBuilder {
  public:
   std::string_view name() const override { return "plain"; }
   SecondOrderTable build(const DiscreteTf& tf, double length, int iterations) const override;
+  SecondOrderWeightedTables build_weighted(const DiscreteTf& tf, double length, int iterations) const override;
 };
 
 }  // namespace vri

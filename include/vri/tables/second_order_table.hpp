@@ -75,12 +75,17 @@ SlabRgba second_order_entry(const DiscreteTf& tf, double u_f, double u_m, double
 // Throws vri::Error unless 1 <= iterations <= kMaxSecondOrderIterations.
 void check_iterations(int iterations);
 
+struct SecondOrderWeightedTables;  // second_order_weighted.hpp
+
 class SecondOrderBuilder {
  public:
   virtual ~SecondOrderBuilder() = default;
   virtual std::string_view name() const = 0;
   // The (N, N, N) table of slabs of `length` (> 0) with K = `iterations`.
   virtual SecondOrderTable build(const DiscreteTf& tf, double length, int iterations) const = 0;
+  // The same table and the two weighted ones of second_order_weighted.hpp
+  // (interpolated lighting), in one pass; `full` has build()'s bytes.
+  virtual SecondOrderWeightedTables build_weighted(const DiscreteTf& tf, double length, int iterations) const = 0;
 };
 
 // "plain" or "fast"; throws vri::Error naming the known ones otherwise.
@@ -102,6 +107,10 @@ class SecondOrderLengthTable {
   std::vector<SecondOrderTable> slices_;
   double max_length_;
 };
+
+// Throws vri::Error unless lengths >= 2, max_length > 0 and
+// tables * lengths * n^3 <= kMaxSecondOrderEntries (1 GiB).
+void check_length_table(int lengths, double max_length, int n, int tables);
 
 // Throws vri::Error unless lengths >= 2, max_length > 0 and lengths * N^3 <=
 // kMaxSecondOrderEntries (1 GiB).

@@ -14,4 +14,12 @@ inline SlabRgba over(const SlabRgba& front, const SlabRgba& back) {
   return {front.r + t * back.r, front.g + t * back.g, front.b + t * back.b, front.a + t * back.a};
 }
 
+// A table entry (4 floats r, g, b, alpha) set to v, rounded to float.
+inline void store(float* entry, const SlabRgba& v) {
+  entry[0] = static_cast<float>(v.r);
+  entry[1] = static_cast<float>(v.g);
+  entry[2] = static_cast<float>(v.b);
+  entry[3] = static_cast<float>(v.a);
+}
+
 }  // namespace vri

@@ -1,0 +1,67 @@
+// Rendering time of the first- and second-order pre-integrated methods side
+// by side (docs/SECOND_ORDER.md, "Results"; El Hajjar et al. 2008 Figures 7-9):
+// neghip, fuel and bucky at 512x512 on one thread, tables built outside the
+// timed loop, process CPU time (steadier than wall time on a shared machine).
+//   BM_PreintRender/<scene>/<method>   method: 0 preint1@a, 1 preint1@1,
+//       2 preint2@a, 3 preint2-dual, 4 preint2@a with a 64^3 table (4 MiB,
+//       cache-resident; 256^3 is 256 MiB), with a = 2 (bucky: 4) as in the paper
+// Run: ./build/bench/bench_preint_render --benchmark_repetitions=5
+//      --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <memory>
+#include <string>
+
+#include "vri/integrators/make_integrator.hpp"
+#include "vri/render/renderer.hpp"
+#include "vri/scene/scene.hpp"
+
+namespace {
+
+const std::array<const char*, 3> kScenes = {"neghip", "fuel", "bucky"};
+
+const vri::Scene& scene(int index) {
+  static const std::array<vri::Scene, 3> scenes = {
+      vri::load_scene(VRI_SOURCE_DIR "/scenes/neghip.json"), vri::load_scene(VRI_SOURCE_DIR "/scenes/fuel.json"),
+      vri::load_scene(VRI_SOURCE_DIR "/scenes/bucky.json")};
+  return scenes[index];
+}
+
+vri::MethodSpec method(int scene_index, int index) {
+  const double a = scene_index == 2 ? 4 : 2;  // bucky: steps 4 and 1 (the paper's Figure 9)
+  switch (index) {
+    case 0: return {.name = "preint1", .step = a};
+    case 1: return {.name = "preint1", .step = 1};
+    case 2: return {.name = "preint2", .step = a};
+    case 4: return {.name = "preint2", .step = a, .table_size = 64, .table_size_given = true};
+    default: return {.name = "preint2-dual"};
+  }
+}
+
+void BM_PreintRender(benchmark::State& state) {
+  const int s = int(state.range(0)), m = int(state.range(1));
+  const vri::Scene& sc = scene(s);
+  const vri::MethodSpec spec = method(s, m);
+  const auto integrator = vri::make_integrator(spec, sc.grid(), sc.transfer_function);
+  vri::CameraSpec camera = sc.camera;
+  camera.width = camera.height = 512;
+  const vri::Camera cam(camera);
+  for (auto _ : state) {
+    vri::Image img = vri::render(cam, *integrator, {.threads = 1});
+    benchmark::DoNotOptimize(img.data().data());
+  }
+  std::string label = kScenes[s];  // built by appends: GCC 12 warns (-Wrestrict) on a chain of +
+  label.append(" ").append(spec.name);
+  if (m != 3) label.append("@").append(std::to_string(int(spec.step)));
+  if (m == 4) label.append(" N=64");
+  state.SetLabel(label);
+}
+BENCHMARK(BM_PreintRender)
+    ->ArgsProduct({{0, 1, 2}, {0, 1, 2, 3, 4}})
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

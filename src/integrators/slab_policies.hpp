@@ -1,0 +1,139 @@
+#pragma once
+// What one pre-integrated slab contributes, per lighting mode (SPEC §5, §9):
+// the policies of march_uniform_slabs<Samples> (ray_steps.hpp), the same for
+// first order (preint1, Samples = 2, a PreintegrationTable) and second order
+// (preint2, Samples = 3, a SecondOrderTable). The march walks the samples and
+// asks for
+//   State at(p)              what a sample carries (nothing, a gradient, shader terms)
+//   Rgba slab(samples)       a whole slab of the table's length, samples front to back
+//   Rgba last(f, b, length)  one linear sub-slab of the partial last slab, exactly (exact_slab)
+// preint2-dual lights its cell segments with the same pieces (lit_by,
+// mean_gradient, lit_lagrange).
+#include <array>
+#include <cstddef>
+#include <utility>
+
+#include "ray_steps.hpp"
+#include "vri/core/rgba.hpp"
+#include "vri/shading/headlight_shader.hpp"
+#include "vri/tables/second_order_weighted.hpp"
+#include "vri/tables/slab_integral.hpp"
+#include "vri/tables/weighted_tables.hpp"
+
+namespace vri::slabs {
+
+using Terms = HeadlightShader::Terms;
+
+inline Rgba rgba(const SlabRgba& v) { return {v.r, v.g, v.b, v.a}; }
+
+// table.lookup(s_0, ..., s_{N-1}) at the samples' scalars.
+template <class Table, class Sample, std::size_t N>
+Rgba lookup(const Table& table, const std::array<Sample, N>& s) {
+  return [&]<std::size_t... i>(std::index_sequence<i...>) { return table.lookup(s[i].s...); }(
+             std::make_index_sequence<N>{});
+}
+
+// The mean of the samples' gradients: the one normal of `sampled` (front and
+// back for preint1; front, middle and back for preint2, docs/LIGHTING.md §6).
+template <class Sample, std::size_t N>
+Vec3 mean_gradient(const std::array<Sample, N>& s) {
+  Vec3 sum = s[0].state;
+  for (std::size_t i = 1; i < N; ++i) sum = sum + s[i].state;
+  return sum * (1.0 / N);
+}
+
+// A pre-integrated slab lit by one normal's terms: C = a C + b alpha
+// (SPEC §5, c_lit = c a + b; Engel et al. 2001).
+inline Rgba lit_by(const Terms& t, const Rgba& v) {
+  return {v[0] * t.a + t.b * v[3], v[1] * t.a + t.b * v[3], v[2] * t.a + t.b * v[3], v[3]};
+}
+
+// First-order interpolated lighting (Lum, Wilson & Ma 2004, §3) from the
+// packed tables of their §5.1 (front = (D_front, alpha), back = (D_back, S_back)):
+//   C = a_f D_front + b_f S_front + a_b D_back + b_b S_back,   alpha = alpha_1.
+inline Rgba lit_weighted(Terms f, Terms b, const Rgba& front, const Rgba& back) {
+  const double specular = f.b * (front[3] - back[3]) + b.b * back[3];
+  return {f.a * front[0] + b.a * back[0] + specular, f.a * front[1] + b.a * back[1] + specular,
+          f.a * front[2] + b.a * back[2] + specular, front[3]};
+}
+
+// Second-order interpolated lighting from the packed weighted tables
+// (second_order_weighted.hpp): full = (C, alpha), middle = (D_m, S_m),
+// back = (D_b, S_b), D_f = C - D_m - D_b, S_f = alpha - S_m - S_b;
+//   C_lit = sum_k a_k D_k + b_k S_k  (k = f, m, b),   alpha = alpha.
+inline Rgba lit_lagrange(const std::array<Terms, 3>& t, const Rgba& full, const Rgba& middle, const Rgba& back) {
+  const double s_f = full[3] - middle[3] - back[3];
+  const double specular = t[0].b * s_f + t[1].b * middle[3] + t[2].b * back[3];
+  Rgba out;
+  for (int c = 0; c < 3; ++c) {
+    const double d_f = full[c] - middle[c] - back[c];
+    out[c] = t[0].a * d_f + t[1].a * middle[c] + t[2].a * back[c] + specular;
+  }
+  out[3] = full[3];
+  return out;
+}
+
+// No lighting: the pre-integrated colour as it is (Engel et al. 2001; El
+// Hajjar et al. 2008).
+template <int Samples, class Table>
+struct Unlit {
+  const Table& table;
+  const DiscreteTf& tf;
+  struct State {};
+  using Sample = detail::SlabSample<State>;
+  State at(Vec3) const { return {}; }
+  Rgba slab(const std::array<Sample, Samples>& s) const { return lookup(table, s); }
+  Rgba last(const Sample& f, const Sample& b, double l) const { return rgba(exact_slab(tf, f.s, b.s, l)); }
+};
+
+// One normal per slab, the mean of its samples' gradients, lighting the
+// pre-integrated colour; the partial slab's sub-slabs lit by the mean of the
+// gradients at their ends.
+template <int Samples, class Table>
+struct Sampled {
+  const Table& table;
+  const DiscreteTf& tf;
+  const HeadlightShader& shader;
+  Vec3 dir;
+  using Sample = detail::SlabSample<Vec3>;  // the gradient
+  Vec3 at(Vec3 p) const { return shader.gradients().sample(p); }
+  Rgba slab(const std::array<Sample, Samples>& s) const {
+    return lit_by(shader.terms(mean_gradient(s), dir), lookup(table, s));
+  }
+  Rgba last(const Sample& f, const Sample& b, double l) const {
+    return lit_by(shader.terms(mean_gradient(std::array{f, b}), dir), rgba(exact_slab(tf, f.s, b.s, l)));
+  }
+};
+
+// The shader terms at each sample multiply the integrals weighted toward it;
+// the partial slab's linear sub-slabs use exact_weighted_slab (first order).
+struct InterpolatedBase {
+  const DiscreteTf& tf;
+  const HeadlightShader& shader;
+  Vec3 dir;
+  using Sample = detail::SlabSample<Terms>;
+  Terms at(Vec3 p) const { return shader.at(p, dir); }
+  Rgba last(const Sample& f, const Sample& b, double l) const {
+    const SlabWeights w = exact_weighted_slab(tf, f.s, b.s, l);
+    return lit_weighted(f.state, b.state, rgba(w.front), rgba(w.back));
+  }
+};
+
+// preint1: the shading linear across the slab (Lum, Wilson & Ma 2004).
+struct Interpolated1 : InterpolatedBase {
+  const WeightedTables& tables;
+  Rgba slab(const std::array<Sample, 2>& s) const {
+    return lit_weighted(s[0].state, s[1].state, lookup(tables.front, s), lookup(tables.back, s));
+  }
+};
+
+// preint2: the shading quadratic through the three samples (Lagrange weights).
+struct Interpolated2 : InterpolatedBase {
+  const SecondOrderWeightedTables& tables;
+  Rgba slab(const std::array<Sample, 3>& s) const {
+    return lit_lagrange({s[0].state, s[1].state, s[2].state}, lookup(tables.full, s), lookup(tables.middle, s),
+                        lookup(tables.back, s));
+  }
+};
+
+}  // namespace vri::slabs
