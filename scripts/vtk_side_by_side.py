@@ -18,7 +18,7 @@ their error is the model, not only the numerics.
 import json, os, subprocess, sys, time
 import numpy as np
 import vtk
-from vtk.util import numpy_support as ns
+from vtk_frames import render_frames
 
 scene_path, size, out = sys.argv[1], int(sys.argv[2]), sys.argv[3]
 os.makedirs(out, exist_ok=True)
@@ -61,33 +61,8 @@ cam = scene["camera"]
 def vtk_render(make_mapper, frames=2):
     mapper = make_mapper()
     mapper.SetInputData(grid)
-    volume = vtk.vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    ren = vtk.vtkRenderer()
-    ren.SetBackground(0, 0, 0)
-    ren.AddVolume(volume)
-    c = ren.GetActiveCamera()
-    c.SetPosition(*cam["eye"]); c.SetFocalPoint(*cam["target"]); c.SetViewUp(*cam.get("up", [0, 1, 0]))
-    c.SetViewAngle(cam.get("fov_y", 30))
-    ren.ResetCameraClippingRange()
-    win = vtk.vtkRenderWindow()
-    win.SetOffScreenRendering(1)
-    win.SetSize(size, size)
-    win.AddRenderer(ren)
-    win.Render()  # first frame: builds tables and sorts; not timed
-    t0 = time.perf_counter()
-    for _ in range(frames):
-        win.Modified(); volume.Modified()
-        win.Render()
-    seconds = (time.perf_counter() - t0) / frames
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(win)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    img = ns.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(size, size, 3)
-    return img[::-1].astype(np.float32) / 255.0, seconds
+    img, wall, _ = render_frames(mapper, prop, cam, size, frames)
+    return img, wall
 
 def raycast():
     m = vtk.vtkUnstructuredGridVolumeRayCastMapper()

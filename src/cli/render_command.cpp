@@ -1,8 +1,9 @@
 // vri render SCENE.json -o OUT.(npy|png) [--method NAME] [--step H]
 //   [--tolerance E] [--table-size N] [--width W --height H] [--threads K]
 //   [--h0 H --hmin H --hmax H --strategy S] [--error-estimate ERR.npy]
-//   [--trace-pixel PX PY --trace STEPS.csv]
+//   [--trace-pixel PX PY --trace STEPS.csv] [--termination T] [--no-skip]
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -32,7 +33,8 @@ namespace {
 struct RenderArgs {
   std::string scene, output;
   std::optional<std::string> method;
-  std::optional<double> step, tolerance;
+  std::optional<double> step, tolerance, termination;
+  bool no_skip = false;
   std::optional<int> table_size, iterations, width, height;
   int threads = 0;
   std::optional<double> h0, hmin, hmax;
@@ -82,6 +84,8 @@ int run_render(const RenderArgs& args) {
   if (args.hmin) scene.method.hmin = *args.hmin;
   if (args.hmax) scene.method.hmax = *args.hmax;
   if (args.strategy) scene.method.strategy = *args.strategy;
+  if (args.termination) scene.method.fast.termination = *args.termination;
+  if (args.no_skip) scene.method.fast.skip_empty = false;
   if (args.error_estimate && std::filesystem::path(*args.error_estimate).extension() != ".npy")
     throw Error("--error-estimate '" + *args.error_estimate + "' must end in .npy");
   if (args.trace.has_value() != !args.trace_pixel.empty()) throw Error("--trace and --trace-pixel go together");
@@ -94,6 +98,8 @@ int run_render(const RenderArgs& args) {
   std::unique_ptr<SlabTable> table;
   std::optional<CylindricalTable> cylinder;
   if (projected) {
+    if (scene.method.fast.termination != 0)
+      throw Error(name + ": early ray termination is not supported yet; it works in riemann and preint1");
     table = make_slab_table(scene.method, scene.mesh(), scene.transfer_function);
     if (name == "pt-cylindrical")
       cylinder.emplace(*table, scene.transfer_function, scene.method.table_size,
@@ -118,11 +124,13 @@ int run_render(const RenderArgs& args) {
       throw Error("--trace-pixel " + std::to_string(px) + " " + std::to_string(py) + " lies outside the image");
   }
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();  // process CPU time, all threads
   const RenderOptions options{.threads = args.threads};
   const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options, scene.lighting)
                       : projected ? render_projected(camera, scene.mesh(), *table, options, scene.lighting)
                                   : render(camera, *integrator, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   Image estimate;
   if (args.error_estimate) estimate = render_error_estimate(camera, *estimating, {.threads = args.threads});
   std::string trace;
@@ -134,7 +142,13 @@ int run_render(const RenderArgs& args) {
   if (args.trace) write_file_atomically(*args.trace, std::as_bytes(std::span(trace.data(), trace.size())));
   std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '"
             << (projected ? name : std::string(integrator->name()))
-            << "' in " << seconds << " s -> " << args.output << "\n";
+            << "' in " << seconds << " s (CPU " << cpu_seconds << " s) -> " << args.output << "\n";
+  if (const double eps = scene.method.fast.termination; eps > 0) {
+    const TerminationBound bound = termination_bound(image, eps);
+    std::cerr << "vri: early termination below transmittance " << eps << ": " << bound.pixels
+              << " pixels may have stopped early; each dropped at most " << bound.max_remaining
+              << " (their remaining transmittance) times its largest colour\n";
+  }
   return 0;
 }
 
@@ -150,6 +164,9 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--tolerance", args->tolerance, "Error tolerance (exact, adaptive)");
   cmd->add_option("--table-size", args->table_size, "Pre-integration table size");
   cmd->add_option("--iterations", args->iterations, "preint2*: parabola steps per table entry (1..4096)");
+  cmd->add_option("--termination", args->termination,
+                  "riemann, preint1: stop a ray once its transmittance is below this (0: off)");
+  cmd->add_flag("--no-skip", args->no_skip, "riemann, preint1: march through empty space too (the plain path)");
   cmd->add_option("--width", args->width, "Image width in pixels");
   cmd->add_option("--height", args->height, "Image height in pixels");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)");

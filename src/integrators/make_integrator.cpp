@@ -45,7 +45,12 @@ const std::vector<std::string>& known_method_names() {
 
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
                                             const TransferFunction& tf, const Lighting& lighting) {
-  if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step, lighting);
+  if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step, lighting, spec.fast);
+  if (spec.name == "preint1")
+    return std::make_unique<Preint1Integrator>(volume, tf, spec.step, spec.table_size, spec.builder, lighting,
+                                               spec.fast);
+  if (spec.fast.termination != 0)
+    throw Error(spec.name + ": early ray termination is not supported yet; it works in riemann and preint1");
   if (spec.name == "adaptive") {
     const AdaptiveParams p{spec.tolerance, spec.h0, spec.hmin, spec.hmax,
                            parse_adaptive_strategy(spec.strategy)};
@@ -54,8 +59,6 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
     return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p, lighting);
   }
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
-  if (spec.name == "preint1")
-    return std::make_unique<Preint1Integrator>(volume, tf, spec.step, spec.table_size, spec.builder, lighting);
   if (spec.name == "preint2" || spec.name == "preint2-dual") {
     const std::string builder = second_order_builder_name(spec.builder);
     if (spec.name == "preint2")
@@ -72,6 +75,8 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
 
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
                                             const TransferFunction& tf, const Lighting& lighting) {
+  if (spec.fast.termination != 0)
+    throw Error(spec.name + ": early ray termination is not supported on tetrahedral meshes yet");
   if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance, lighting);
   if (spec.name == "tet-raycast")
     return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf), lighting);

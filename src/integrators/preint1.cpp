@@ -8,11 +8,13 @@
 namespace vri {
 
 Preint1Integrator::Preint1Integrator(const GridVolume& volume, const TransferFunction& tf, double step,
-                                     int table_size, const std::string& builder, const Lighting& lighting)
+                                     int table_size, const std::string& builder, const Lighting& lighting,
+                                     const FastPath& fast)
     : volume_(volume),
       h_(detail::world_step(volume, step, "preint1")),
       tf_(tf, table_size),
-      table_(make_table_builder(builder)->build(tf_, h_)) {
+      table_(make_table_builder(builder)->build(tf_, h_)),
+      fast_(volume, ZeroOpacity(tf_), fast, "preint1") {
   if (!lighting.enabled) return;
   if (lighting.mode != "sampled" && lighting.mode != "interpolated")
     throw Error("preint1: lighting mode must be sampled or interpolated, got '" + lighting.mode + "'");
@@ -23,11 +25,15 @@ Preint1Integrator::Preint1Integrator(const GridVolume& volume, const TransferFun
 Rgba Preint1Integrator::integrate(const Ray& ray) const {
   using detail::march_uniform_slabs;
   using Table = PreintegrationTable;
+  const detail::Leap leap{fast_.space(), fast_.termination()};
+  const detail::NoPrefetch none;
   if (weighted_)
-    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Interpolated1{{tf_, *shader_, ray.dir}, *weighted_});
+    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Interpolated1{{tf_, *shader_, ray.dir}, *weighted_}, none,
+                                  leap);
   if (shader_)
-    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Sampled<2, Table>{table_, tf_, *shader_, ray.dir});
-  return march_uniform_slabs<2>(volume_, ray, h_, slabs::Unlit<2, Table>{table_, tf_});
+    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Sampled<2, Table>{table_, tf_, *shader_, ray.dir}, none,
+                                  leap);
+  return march_uniform_slabs<2>(volume_, ray, h_, slabs::Unlit<2, Table>{table_, tf_}, none, leap);
 }
 
 }  // namespace vri

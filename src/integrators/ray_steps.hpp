@@ -8,13 +8,22 @@
 // exactly under the table's discretisation with the scalar linear along each
 // (exact_slab), so it is neither dropped nor counted twice and adds no length
 // interpolation error.
+//
+// Leap (preint1's fast path, fast_path.hpp): with slabs of one step, the march
+// jumps over runs of empty macro cells from sample to sample, so it stays on
+// the same samples and every slab it skips would read zero table entries; it
+// stops once T < termination. Slabs of more steps (preint2) do not leap: their
+// parabola can leave the range of their samples.
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "vri/core/error.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/core/rgba.hpp"
+#include "vri/volume/empty_space.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri::detail {
@@ -60,9 +69,14 @@ struct NoPrefetch {
   void operator()(const S&) const {}
 };
 
+struct Leap {
+  const EmptySpace* space = nullptr;  // null: no skipping
+  double termination = 0;             // 0: never stop early
+};
+
 template <int Samples, class Policy, class Prefetch = NoPrefetch>
 Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, const Policy& policy,
-                         Prefetch&& prefetch = {}) {
+                         Prefetch&& prefetch = {}, const Leap& leap = {}) {
   static_assert(Samples >= 2);
   constexpr int steps = Samples - 1;
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
@@ -82,7 +96,24 @@ Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, con
   Slab s{}, next{};
   s[0] = sample_at(iv->t0);
   if (full > 0) fill(s, 0);
+  double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
   for (long long k = 0; k < full; ++k) {
+    if (acc.T < leap.termination) return acc.result();
+    if constexpr (Samples == 2) {
+      const double t = iv->t0 + k * h;
+      if (leap.space && t >= t_check) {
+        const EmptySpace::Run run = leap.space->run(ray, t, iv->t1);
+        t_check = run.t_end;
+        // In an empty run the slabs between samples k .. j read zero entries.
+        const long long j = run.empty ? std::min(full, static_cast<long long>(std::floor((run.t_end - iv->t0) / h))) : k;
+        if (j > k) {
+          k = j;
+          s[0] = sample_at(iv->t0 + k * h);
+          if (k == full) break;
+          fill(s, k);
+        }
+      }
+    }
     next[0] = s[steps];
     if (k + 1 < full) {
       fill(next, k + 1);
@@ -92,6 +123,7 @@ Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, con
     acc.add(v[0], v[1], v[2], v[3]);
     s = next;
   }
+  if (acc.T < leap.termination) return acc.result();
   const double t_rest = iv->t0 + full * steps * h;
   const double sub = (iv->t1 - t_rest) / steps;
   if (sub > 0)

@@ -1,6 +1,7 @@
 #include "vri/integrators/riemann.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "vri/core/error.hpp"
@@ -8,8 +9,8 @@
 namespace vri {
 
 RiemannIntegrator::RiemannIntegrator(const GridVolume& volume, const TransferFunction& tf,
-                                     double step, const Lighting& lighting)
-    : volume_(volume), tf_(tf) {
+                                     double step, const Lighting& lighting, const FastPath& fast)
+    : volume_(volume), tf_(tf), fast_(volume, ZeroOpacity(tf), fast, "riemann") {
   if (lighting.enabled) shader_.emplace(lighting, volume);
   if (!(step >= 1e-4 && step <= 1e4))
     throw Error("riemann: step must be in [1e-4, 1e4] voxel units, got " + std::to_string(step));
@@ -22,10 +23,20 @@ Rgba RiemannIntegrator::integrate(const Ray& ray) const {
   const double len = iv->length();
   const long long n = std::max(1LL, static_cast<long long>(std::ceil(len / h_)));
   double T = 1, C[3] = {0, 0, 0};
-  for (long long k = 0; k < n; ++k) {
+  const EmptySpace* space = fast_.space();
+  double t_check = -std::numeric_limits<double>::infinity();  // in a non-empty macro cell until then
+  for (long long k = 0; k < n && !(T < fast_.termination()); ++k) {
     const double t = iv->t0 + k * h_;
     const double hk = std::min(h_, iv->t1 - t);
     if (!(hk > 0)) break;
+    if (space && t >= t_check) {
+      const EmptySpace::Run run = space->run(ray, t, iv->t1);
+      t_check = run.t_end;
+      if (run.empty) {  // samples k .. up to run.t_end add nothing
+        k = std::max(k, static_cast<long long>(std::floor((run.t_end - iv->t0) / h_)));
+        continue;
+      }
+    }
     const Vec3 p = ray.at(t);
     const TfSample v = tf_(volume_.sample(p));
     if (v.tau == 0) continue;

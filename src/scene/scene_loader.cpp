@@ -268,6 +268,8 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     method.hmax = m.number(mj, "hmax", method.hmax);
     method.strategy = m.string(mj, "strategy", method.strategy);
     method.builder = m.string(mj, "builder", method.builder);
+    method.fast.termination = m.number(mj, "termination", method.fast.termination);
+    method.fast.skip_empty = m.boolean(mj, "skip_empty", method.fast.skip_empty);
   }
 
   Lighting lighting;

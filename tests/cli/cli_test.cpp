@@ -72,6 +72,27 @@ TEST(Cli, RendersComparesAndOverrides) {
 }
 
 // Each bad input: non-zero exit, exactly one line on stderr, no output file.
+// Empty-space skipping changes no byte; early termination reports its bound;
+// both can come from the scene too.
+TEST(Cli, FastPathFlagsAndSceneKeys) {
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, kGood);
+  const auto a = dir / "a.npy", b = dir / "b.npy";
+  for (const char* method : {"riemann", "preint1"}) {
+    ASSERT_EQ(run("render " + scene + " -o " + a.string() + " --method " + method, dir).code, 0);
+    ASSERT_EQ(run("render " + scene + " -o " + b.string() + " --method " + method + " --no-skip", dir).code, 0);
+    EXPECT_EQ(read_npy(a).data, read_npy(b).data) << method;
+    const ProcessResult r = run("render " + scene + " -o " + b.string() + " --method " + method + " --termination 0.5", dir);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("early termination below transmittance 0.5: "), std::string::npos) << r.err;
+  }
+  std::string keyed = kGood;
+  keyed.replace(keyed.find(R"("name": "exact")"), 15, R"("name": "riemann", "termination": 0.5, "skip_empty": false)");
+  const ProcessResult r = run("render " + scene_with(dir, keyed) + " -o " + a.string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("early termination below transmittance 0.5: "), std::string::npos) << r.err;
+}
+
 TEST(Cli, BadInputIsRefusedCleanly) {
   test::TempDir dir;
   const std::string good = scene_with(dir, kGood);
@@ -99,6 +120,8 @@ TEST(Cli, BadInputIsRefusedCleanly) {
       "render " + good + " -o " + out + " --width 100000 --height 100000",
       "render " + good + " -o " + out + " --tolerance 5",
       "render " + good + " -o " + out + " --threads -3",
+      "render " + good + " -o " + out + " --method preint1 --termination 1.5",
+      "render " + good + " -o " + out + " --method exact --termination 0.1",
       "render " + good + " -o " + (dir / "out.tiff").string(),
       "render " + good + " -o " + (dir / "no_such_dir" / "x.npy").string(),
       "render " + good,

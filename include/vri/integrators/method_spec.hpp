@@ -3,6 +3,8 @@
 // and its parameters. Step sizes are in voxel units (SPEC §1).
 #include <string>
 
+#include "vri/integrators/fast_path.hpp"
+
 namespace vri {
 
 struct MethodSpec {
@@ -21,6 +23,10 @@ struct MethodSpec {
   // preint*: pre-integration table builder. preint2* use it when it names a
   // second-order builder (plain, fast), else the fast one.
   std::string builder = "incremental";
+  // riemann, preint1: empty-space skipping (`skip_empty`, default on: it changes
+  // no pixel) and early ray termination (`termination`, a transmittance
+  // threshold; default 0, off). fast_path.hpp.
+  FastPath fast{};
 };
 
 }  // namespace vri

@@ -12,9 +12,14 @@
 // pre-integrated colour with one normal, the mean of its two samples'
 // gradients; `interpolated` (Lum, Wilson & Ma 2004) interpolates the shading
 // across the slab with the weighted tables of tables/weighted_tables.hpp.
+//
+// FastPath (fast_path.hpp): the ray leaps over runs of empty macro cells from
+// sample to sample (whole steps, so on the same samples): every slab inside a
+// run reads zero table entries. It may stop once T < termination.
 #include <optional>
 #include <string>
 
+#include "vri/integrators/fast_path.hpp"
 #include "vri/integrators/integrator.hpp"
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/shading/lighting.hpp"
@@ -31,7 +36,7 @@ class Preint1Integrator final : public Integrator {
   // and is built with the named builder (table_builder.hpp). Throws
   // vri::Error for a lighting mode other than sampled or interpolated.
   Preint1Integrator(const GridVolume& volume, const TransferFunction& tf, double step, int table_size,
-                    const std::string& builder, const Lighting& lighting = {});
+                    const std::string& builder, const Lighting& lighting = {}, const FastPath& fast = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "preint1"; }
 
@@ -44,6 +49,7 @@ class Preint1Integrator final : public Integrator {
   PreintegrationTable table_;
   std::optional<HeadlightShader> shader_;     // when lit
   std::optional<WeightedTables> weighted_;    // when lit and interpolated
+  detail::Skipping fast_;
 };
 
 }  // namespace vri

@@ -6,8 +6,11 @@
 //   alpha_k = 1 - exp(-tau(s_k) h_k),  C += T c(s_k) alpha_k,  T *= 1 - alpha_k.
 // A left Riemann sum of the optical depth: first-order accurate in h.
 // With lighting, c(s_k) is replaced by c_lit at the sample (SPEC §5).
+// FastPath (fast_path.hpp): samples in empty macro cells are leapt over (they
+// have tau = 0 and add nothing), and the ray may stop once T < termination.
 #include <optional>
 
+#include "vri/integrators/fast_path.hpp"
 #include "vri/integrators/integrator.hpp"
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/transfer_function.hpp"
@@ -19,7 +22,7 @@ class RiemannIntegrator final : public Integrator {
  public:
   // step in voxel units; throws vri::Error unless 1e-4 <= step <= 1e4.
   RiemannIntegrator(const GridVolume& volume, const TransferFunction& tf, double step,
-                    const Lighting& lighting = {});
+                    const Lighting& lighting = {}, const FastPath& fast = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "riemann"; }
 
@@ -28,6 +31,7 @@ class RiemannIntegrator final : public Integrator {
   const TransferFunction& tf_;
   double h_;  // world units
   std::optional<HeadlightShader> shader_;
+  detail::Skipping fast_;
 };
 
 }  // namespace vri

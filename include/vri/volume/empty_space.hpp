@@ -1,0 +1,46 @@
+#pragma once
+// EmptySpace: the macro cells (macro_cells.hpp) classified against a transfer
+// function, and the walk that lets a ray leap over the empty ones (the 3D DDA
+// of Amanatides & Woo 1987 over macro cells).
+//
+// A macro cell is empty when its range [min - d, max + d] contributes nothing
+// (ZeroOpacity::over), d = 1e-6 (max - min of the volume): the margin covers
+// the rounding of a sample position that lies on a face between an empty and
+// a non-empty macro cell. Exactness for the integrators:
+// - riemann: a sample in an empty cell has tau = 0 and adds nothing;
+// - preint1: along a run of empty cells each neighbour shares a face (and the
+//   samples on it) with the next, so their ranges overlap and their union is
+//   one interval with zero opacity; a slab between two samples in the run reads
+//   table entries inside it, which are zero.
+// Classifying is O(macro cells) and takes milliseconds (bench_macro_cells).
+#include <cstdint>
+#include <vector>
+
+#include "vri/core/ray.hpp"
+#include "vri/tables/zero_opacity.hpp"
+#include "vri/volume/macro_cells.hpp"
+
+namespace vri {
+
+class EmptySpace {
+ public:
+  EmptySpace(const MacroCells& cells, const ZeroOpacity& zero);
+
+  bool empty(std::size_t index) const { return empty_[index] != 0; }
+  std::size_t empty_count() const;
+
+  // Where the ray stands at parameter t (t <= t_max): in a run of empty
+  // (or of non-empty) macro cells that ends at t_end, where the ray enters a
+  // cell of the other kind, or t_max.
+  struct Run {
+    bool empty;
+    double t_end;
+  };
+  Run run(const Ray& ray, double t, double t_max) const;
+
+ private:
+  const MacroCells& cells_;
+  std::vector<std::uint8_t> empty_;
+};
+
+}  // namespace vri

@@ -1,0 +1,165 @@
+#!/usr/bin/python3
+"""vri's ray casters beside VTK's vtkFixedPointVolumeRayCastMapper on a regular
+grid: the same volume, transfer function and camera, rendered back to back in
+one run; time per frame (wall and CPU) and error against vri's `exact`
+(issue 8; docs/PERFORMANCE.md, "Interactive speed (issue 8)").
+
+Needs Debian's python3-vtk9 and, without a display, Xvfb:
+  xvfb-run -a -s "-screen 0 1024x768x24" /usr/bin/python3 scripts/vtk_grid_side_by_side.py \
+      scenes/neghip.json 512 /tmp/side [--repeat 5] [--exact-tolerance 1e-4]
+It runs ./build/vri with 2 threads: `exact` (the reference, kept in OUT as
+<scene>_exact.npy and reused when present), `preint1` and `riemann` at step 1
+with empty-space skipping (the default), with skipping and early termination
+below transmittance 0.002 (under one 8-bit step), and with neither (--no-skip,
+the plain path), then VTK's FixedPoint mapper with 2 threads at sample distance 1 voxel.
+Each vri time is the fastest of --repeat renders as vri reports it (the render
+only: not loading the volume, building the macro cells or the table); each VTK
+time is the mean of --repeat frames after a first, untimed one.
+
+Errors are over RGB composited on black (VTK's framebuffer alpha is not
+comparable); VTK's image is 8-bit, so vri's is also scored after rounding to
+8 bits ("RMS 8-bit"), which is what a screen shows.
+
+Transfer function: VTK's FixedPoint mapper looks the function up at whole
+scalar values, so vri's (s, r, g, b, tau) function is sampled at every whole
+scalar of the data's range (and at its control points): colour points (r, g, b)
+and scalar-opacity points a = 1 - exp(-tau) with ScalarOpacityUnitDistance 1
+voxel, so a slab of one voxel has the same opacity in both. VTK interpolates
+a (not tau) and its colour and opacity in 15-bit fixed point: part of its
+error is that model, not only the step.
+"""
+import argparse, gzip, json, os, re, subprocess
+import numpy as np
+import vtk
+from vtk.util import numpy_support as ns
+from vtk_frames import render_frames
+
+ap = argparse.ArgumentParser()
+ap.add_argument("scene"); ap.add_argument("size", type=int); ap.add_argument("out")
+ap.add_argument("--repeat", type=int, default=5)
+ap.add_argument("--exact-tolerance", default="1e-4")
+args = ap.parse_args()
+os.makedirs(args.out, exist_ok=True)
+size = args.size
+name = os.path.splitext(os.path.basename(args.scene))[0]
+scene = json.load(open(args.scene))
+base = os.path.dirname(os.path.abspath(args.scene))
+vri = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "build", "vri")
+
+
+def load_json(spec):
+    return json.load(open(os.path.join(base, spec["file"]))) if "file" in spec else spec
+
+
+# ---- the volume (raw with dims and type in the scene, or a raw/gzip NRRD) ----
+DTYPES = {"uint8": np.uint8, "uint16": np.uint16, "int16": np.int16, "float32": np.float32,
+          "unsigned char": np.uint8, "uchar": np.uint8, "float": np.float32, "ushort": np.uint16}
+vol = scene["volume"]
+path = os.path.join(base, vol["file"])
+if path.endswith(".nrrd"):
+    raw = open(path, "rb").read()
+    head, body = raw.split(b"\n\n", 1)
+    fields = dict(l.split(": ", 1) for l in head.decode().splitlines()[1:] if ": " in l and not l.startswith("#"))
+    dims = [int(x) for x in fields["sizes"].split()]
+    dtype = DTYPES[fields["type"]]
+    data = gzip.decompress(body) if fields.get("encoding") in ("gzip", "gz") else body
+    spacing = [float(x) for x in fields.get("spacings", "1 1 1").split()]
+else:
+    dims, dtype, spacing = vol["dims"], DTYPES[vol["type"]], vol.get("spacing", [1, 1, 1])
+    data = open(path, "rb").read()
+spacing = vol.get("spacing", spacing)
+origin = vol.get("origin", [0, 0, 0])
+values = np.frombuffer(data, dtype=dtype, count=dims[0] * dims[1] * dims[2])
+image = vtk.vtkImageData()
+image.SetDimensions(*dims)
+image.SetSpacing(*spacing)
+image.SetOrigin(*origin)
+image.GetPointData().SetScalars(ns.numpy_to_vtk(values.copy(), deep=1))
+
+# ---- the transfer function, evaluated as vri does (SPEC §3) ----
+points = load_json(scene["transfer_function"])["points"]
+
+
+def tf_at(s):
+    """(r, g, b, tau) at s: linear between points, ends held, the later of two equal-s points at s."""
+    j = max((i for i, p in enumerate(points) if p[0] <= s), default=-1)
+    if j < 0:
+        return points[0][1:]
+    if j == len(points) - 1:
+        return points[-1][1:]
+    a, b = points[j], points[j + 1]
+    w = (s - a[0]) / (b[0] - a[0])
+    return [a[k] + w * (b[k] - a[k]) for k in range(1, 5)]
+
+
+color = vtk.vtkColorTransferFunction()
+opacity = vtk.vtkPiecewiseFunction()
+scalars = sorted(set(range(int(np.floor(values.min())), int(np.ceil(values.max())) + 1)) |
+                 {p[0] for p in points if values.min() <= p[0] <= values.max()})
+for s in scalars:
+    r, g, b, tau = tf_at(s)
+    color.AddRGBPoint(s, r, g, b)
+    opacity.AddPoint(s, 1 - np.exp(-tau))
+prop = vtk.vtkVolumeProperty()
+prop.SetColor(color)
+prop.SetScalarOpacity(opacity)
+prop.SetScalarOpacityUnitDistance(min(spacing))
+prop.SetInterpolationTypeToLinear()
+prop.ShadeOff()
+
+
+# ---- vri ----
+def vri_render(method, extra=(), repeat=args.repeat):
+    out = os.path.join(args.out, f"{name}_vri_{method}{'_'.join(extra).replace('-', '_').replace('.', '')}.npy")
+    best = None
+    for _ in range(repeat):
+        r = subprocess.run([vri, "render", args.scene, "--method", method, "--step", "1", "--width", str(size), "--height",
+                            str(size), "--threads", "2", "-o", out, *extra], check=True, capture_output=True,
+                           text=True)
+        m = re.search(r" in ([0-9.eE+-]+) s \(CPU ([0-9.eE+-]+) s\)", r.stderr)
+        wall, cpu = float(m.group(1)), float(m.group(2))
+        if best is None or wall < best[0]:
+            best = (wall, cpu)
+    return np.load(out)[..., :3], best
+
+
+exact_path = os.path.join(args.out, f"{name}_exact_{size}.npy")
+if not os.path.exists(exact_path):
+    subprocess.run([vri, "render", args.scene, "--method", "exact", "--tolerance", args.exact_tolerance,
+                    "--width", str(size), "--height", str(size), "--threads", "2", "-o", exact_path], check=True)
+exact = np.load(exact_path)[..., :3]
+
+# ---- VTK ----
+cam = scene["camera"]
+
+
+def vtk_render(frames=args.repeat):
+    mapper = vtk.vtkFixedPointVolumeRayCastMapper()
+    mapper.SetInputData(image)
+    mapper.SetNumberOfThreads(2)
+    mapper.SetAutoAdjustSampleDistances(0)
+    mapper.SetSampleDistance(min(spacing))  # 1 voxel
+    mapper.SetImageSampleDistance(1.0)
+    img, wall, cpu = render_frames(mapper, prop, cam, size, frames)
+    return img, (wall, cpu)
+
+
+rows = []
+for method in ["preint1", "riemann"]:
+    for extra, label in [((), "skipping"), (("--termination", "0.002"), "skipping + termination 0.002"),
+                         (("--no-skip",), "plain")]:
+        img, t = vri_render(method, extra)
+        rows.append((f"vri {method} step 1, {label}", img, t, True))
+img, t = vtk_render()
+np.save(os.path.join(args.out, f"{name}_vtk_fixedpoint.npy"), img)
+rows.append(("VTK FixedPoint, sample distance 1", img, t, False))
+
+vtk_ms = rows[-1][2][0] * 1000
+print(f"### {name}, {size}x{size}, 2 threads\n")
+print("| renderer | ms per frame (wall) | CPU ms per frame | VTK wall / this | RMS RGB vs exact | RMS 8-bit | max |")
+print("|---|---|---|---|---|---|---|")
+for label, img, (wall, cpu), is_vri in rows:
+    d = img - exact
+    d8 = (np.round(np.clip(img, 0, 1) * 255) / 255 - exact) if is_vri else d
+    print(f"| {label} | {wall * 1000:.1f} | {cpu * 1000:.1f} | {vtk_ms / (wall * 1000):.2f} | "
+          f"{np.sqrt((d ** 2).mean()):.5f} | {np.sqrt((d8 ** 2).mean()):.5f} | {np.abs(d).max():.3f} |")

@@ -1,0 +1,158 @@
+// The fast path of riemann and preint1 (fast_path.hpp) against the plain one,
+// pixel by pixel: empty-space skipping changes no bit, early termination
+// changes a pixel by at most its threshold, and both give the same bytes
+// with any thread count.
+#include "vri/integrators/fast_path.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "test_support.hpp"
+#include "vri/core/error.hpp"
+#include "vri/integrators/make_integrator.hpp"
+#include "vri/render/renderer.hpp"
+#include "vri/scene/scene.hpp"
+#include "vri/volume/builtin_volumes.hpp"
+
+namespace vri {
+namespace {
+
+Image render_with(const Scene& scene, MethodSpec spec, const FastPath& fast, const Lighting& lighting = {},
+                  const RenderOptions& options = {}) {
+  spec.fast = fast;
+  const auto integrator = make_integrator(spec, scene.grid(), scene.transfer_function, lighting);
+  return render(Camera(scene.camera), *integrator, options);
+}
+
+Scene small(const std::string& scene_file, int size) {
+  Scene scene = load_scene(test::source_path(scene_file));
+  scene.camera.width = scene.camera.height = size;
+  return scene;
+}
+
+const FastPath kPlain{.skip_empty = false};
+const FastPath kSkip{.skip_empty = true};
+
+void expect_same_bytes(const Image& a, const Image& b, const std::string& what) {
+  ASSERT_EQ(a.data().size(), b.data().size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < a.data().size(); ++i) differ += a.data()[i] != b.data()[i] ? 1 : 0;
+  EXPECT_EQ(differ, 0u) << what;
+}
+
+TEST(FastPath, SkippingChangesNoBitOnNeghip) {
+  const Scene scene = small("scenes/neghip.json", 96);
+  for (const char* name : {"riemann", "preint1"})
+    for (double step : {1.0, 0.37}) {
+      const MethodSpec spec{.name = name, .step = step};
+      expect_same_bytes(render_with(scene, spec, kPlain), render_with(scene, spec, kSkip),
+                        std::string(name) + " step " + std::to_string(step));
+    }
+}
+
+TEST(FastPath, SkippingChangesNoBitWithLighting) {
+  const Scene scene = small("scenes/neghip_lit.json", 64);
+  Lighting lighting = scene.lighting;
+  for (const char* mode : {"sampled", "interpolated"}) {
+    lighting.mode = mode;
+    const MethodSpec spec{.name = "preint1", .step = 1};
+    expect_same_bytes(render_with(scene, spec, kPlain, lighting), render_with(scene, spec, kSkip, lighting),
+                      std::string("preint1 ") + mode);
+  }
+  const MethodSpec spec{.name = "riemann", .step = 0.5};
+  expect_same_bytes(render_with(scene, spec, kPlain, lighting), render_with(scene, spec, kSkip, lighting),
+                    "riemann lit");
+}
+
+// Every table builder leaves exact zeros where the transfer function is empty.
+TEST(FastPath, SkippingChangesNoBitWithAnyTableBuilder) {
+  const Scene scene = small("scenes/neghip.json", 48);
+  for (const char* builder : {"brute", "incremental", "sliced", "engel"}) {
+    const MethodSpec spec{.name = "preint1", .step = 1, .table_size = 128, .builder = builder};
+    expect_same_bytes(render_with(scene, spec, kPlain), render_with(scene, spec, kSkip), builder);
+  }
+}
+
+// A shell around a sphere, dims not multiples of 8, through random transfer
+// functions (runs of zero opacity, spikes, steps), seen head-on along z by an
+// orthographic camera whose rays and samples lie on grid planes and macro-cell
+// faces, and from an oblique perspective camera.
+TEST(FastPath, SkippingChangesNoBitOnRandomTransferFunctionsAndAlignedRays) {
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 4; ++trial) {
+    Scene scene{sphere_distance({37, 45, 29}, 12), test::random_tf(rng, 20, 0.5), {}, {}, {0, 0, 0}, {}};
+    // scalars span [-12, 20]; shift the function so some runs fall on the data
+    std::vector<ControlPoint> points = scene.transfer_function.points();
+    for (auto& p : points) p.s -= 12;
+    scene.transfer_function = TransferFunction(points);
+    scene.camera.width = scene.camera.height = 40;
+    scene.camera.projection = Projection::Orthographic;
+    scene.camera.eye = {18.5, 22.5, 60};
+    scene.camera.target = {18.5, 22.5, 0};
+    scene.camera.ortho_height = 40;  // 40 pixels 1 apart: rays at whole x and y, samples at whole z
+    for (int view = 0; view < 2; ++view) {
+      if (view == 1) {
+        scene.camera.projection = Projection::Perspective;
+        scene.camera.eye = {80, -40, 50};
+        scene.camera.target = {18, 22, 14};
+        scene.camera.up = {0, 0, 1};
+      }
+      for (const char* name : {"riemann", "preint1"}) {
+        const MethodSpec spec{.name = name, .step = 1};
+        expect_same_bytes(render_with(scene, spec, kPlain), render_with(scene, spec, kSkip),
+                          std::string(name) + " trial " + std::to_string(trial) + " view " + std::to_string(view));
+      }
+    }
+  }
+}
+
+// Early termination drops at most the remaining transmittance T < threshold:
+// alpha changes by less than the threshold, and so does each colour (unlit
+// colours are at most 1).
+TEST(FastPath, TerminationChangesAPixelByAtMostItsThreshold) {
+  const Scene scene = small("scenes/bonsai.json", 40);
+  for (const char* name : {"riemann", "preint1"}) {
+    const MethodSpec spec{.name = name, .step = 1};
+    const Image plain = render_with(scene, spec, kPlain);
+    for (double eps : {0.3, 0.05}) {
+      const Image cut = render_with(scene, spec, {.skip_empty = true, .termination = eps});
+      double worst = 0;
+      int changed = 0;
+      for (std::size_t i = 0; i < plain.data().size(); ++i) {
+        const double d = std::abs(double(plain.data()[i]) - cut.data()[i]);
+        worst = std::max(worst, d);
+        changed += d > 0 ? 1 : 0;
+      }
+      EXPECT_LE(worst, eps) << name << " " << eps;
+      EXPECT_GT(changed, 0) << name << " " << eps;  // it did stop some rays
+      const TerminationBound bound = termination_bound(cut, eps);
+      EXPECT_GT(bound.pixels, 0);
+      EXPECT_LT(bound.max_remaining, eps);
+    }
+  }
+}
+
+TEST(FastPath, SameBytesWithAnyThreadCount) {
+  const Scene scene = small("scenes/neghip.json", 64);
+  for (const char* name : {"riemann", "preint1"}) {
+    const MethodSpec spec{.name = name, .step = 1};
+    const FastPath fast{.skip_empty = true, .termination = 0.02};
+    const Image one = render_with(scene, spec, fast, {}, {.threads = 1, .tile_size = 16});
+    expect_same_bytes(one, render_with(scene, spec, fast, {}, {.threads = 2, .tile_size = 7}), name);
+    expect_same_bytes(one, render_with(scene, spec, fast, {}, {.threads = 3, .tile_size = 64}), name);
+  }
+}
+
+TEST(FastPath, BadThresholdsAndUnsupportedMethodsAreErrors) {
+  const Scene scene = small("scenes/neghip.json", 8);
+  for (double bad : {-0.1, 1.0, std::nan("")})
+    EXPECT_THROW(render_with(scene, {.name = "preint1"}, {.termination = bad}), Error) << bad;
+  EXPECT_THROW(render_with(scene, {.name = "exact"}, {.termination = 0.01}), Error);
+  EXPECT_THROW(render_with(scene, {.name = "preint2"}, {.termination = 0.01}), Error);
+}
+
+}  // namespace
+}  // namespace vri
