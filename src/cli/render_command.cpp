@@ -99,7 +99,7 @@ int run_render(const RenderArgs& args) {
   std::optional<CylindricalTable> cylinder;
   if (projected) {
     if (scene.method.fast.termination != 0)
-      throw Error(name + ": early ray termination is not supported yet; it works in riemann and preint1");
+      throw Error(name + ": early ray termination is not supported yet; it works in riemann, preint1 and preint2");
     table = make_slab_table(scene.method, scene.mesh(), scene.transfer_function);
     if (name == "pt-cylindrical")
       cylinder.emplace(*table, scene.transfer_function, scene.method.table_size,
@@ -165,8 +165,9 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--table-size", args->table_size, "Pre-integration table size");
   cmd->add_option("--iterations", args->iterations, "preint2*: parabola steps per table entry (1..4096)");
   cmd->add_option("--termination", args->termination,
-                  "riemann, preint1: stop a ray once its transmittance is below this (0: off)");
-  cmd->add_flag("--no-skip", args->no_skip, "riemann, preint1: march through empty space too (the plain path)");
+                  "riemann, preint1, preint2: stop a ray once its transmittance is below this (0: off)");
+  cmd->add_flag("--no-skip", args->no_skip,
+                "riemann, preint1, preint2: march through empty space too (the plain path)");
   cmd->add_option("--width", args->width, "Image width in pixels");
   cmd->add_option("--height", args->height, "Image height in pixels");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)");
