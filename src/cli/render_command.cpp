@@ -92,9 +92,12 @@ int run_render(const RenderArgs& args) {
   const bool projected = name == "pt" || name == "pt-cylindrical";
   std::unique_ptr<Integrator> integrator;
   std::unique_ptr<SlabTable> table;
+  std::unique_ptr<WeightedLengthTables> weighted;  // pt, lighting mode interpolated
   std::optional<CylindricalTable> cylinder;
   if (projected) {
     table = make_slab_table(scene.method, scene.mesh(), scene.transfer_function);
+    if (name == "pt")
+      weighted = make_weighted_length_tables(scene.method, scene.mesh(), scene.transfer_function, scene.lighting);
     if (name == "pt-cylindrical")
       cylinder.emplace(*table, scene.transfer_function, scene.method.table_size,
                        scene.method.planes > 0 ? scene.method.planes : scene.method.table_size);
@@ -120,7 +123,7 @@ int run_render(const RenderArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   const RenderOptions options{.threads = args.threads};
   const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options, scene.lighting)
-                      : projected ? render_projected(camera, scene.mesh(), *table, options, scene.lighting)
+                      : projected ? render_projected(camera, scene.mesh(), *table, options, scene.lighting, weighted.get())
                                   : render(camera, *integrator, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Image estimate;

@@ -166,9 +166,15 @@ class TileRaster {
         const Vec3 k = interpolate(la / weight_of(a.d_back), lb / weight_of(b.d_back), lc / weight_of(c.d_back),
                                    a.back, b.back, c.back, a.s_back, b.s_back, c.s_back, sbk);
         const double l = length(k - f);
-        Rgba v = cylinder_ ? cylinder_->lookup(alpha, l, sf, sbk) : slab_->lookup(l, sf, sbk);
+        Rgba v;
+        if (cylinder_) {
+          v = cylinder_->lookup(alpha, l, sf, sbk);
+          if (lighting_ && l > 0) v = lighting_->apply(v, tet, f, k, (k - f) * (1 / l));
+        } else {
+          v = lighting_ && l > 0 ? lighting_->chord(*slab_, l, sf, sbk, tet, f, k, (k - f) * (1 / l))
+                                 : slab_->lookup(l, sf, sbk);
+        }
         if (v[3] == 0 && v[0] == 0 && v[1] == 0 && v[2] == 0) continue;
-        if (lighting_ && l > 0) v = lighting_->apply(v, tet, f, k, (k - f) * (1 / l));
         out.push_back({y * W + x, tet, depth(f), {float(v[0]), float(v[1]), float(v[2]), float(v[3])}});
       }
   }
@@ -184,13 +190,15 @@ class TileRaster {
 };
 
 Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, const SlabTable* slab,
-                        const CylindricalTable* cylinder, const RenderOptions& options, const Lighting& lighting) {
+                        const CylindricalTable* cylinder, const RenderOptions& options, const Lighting& lighting,
+                        const WeightedLengthTables* weighted) {
   if (options.threads < 0) throw Error("thread count must be >= 0");
   if (options.tile_size <= 0) throw Error("tile size must be positive");
-  if ((slab ? slab->max_length() : cylinder->max_length()) < mesh.max_edge_length())
+  if ((slab ? slab->max_length() : cylinder->max_length()) < mesh.max_edge_length() ||
+      (weighted && weighted->front.max_length() < mesh.max_edge_length()))
     throw Error("pt: the table must cover segments up to the longest edge of the mesh");
   std::optional<ChordLighting> lit;
-  if (lighting.enabled) lit.emplace(mesh, lighting, slab ? "pt" : "pt-cylindrical");
+  if (lighting.enabled) lit.emplace(mesh, lighting, slab ? "pt" : "pt-cylindrical", weighted);
   const CameraSpec& cs = camera.spec();
   const Vec3 view = normalize(cs.target - cs.eye);
   const bool perspective = cs.projection == Projection::Perspective;
@@ -269,13 +277,13 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, const SlabTab
 }  // namespace
 
 Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTable& table,
-                       const RenderOptions& options, const Lighting& lighting) {
-  return render_tetrahedra(camera, mesh, &table, nullptr, options, lighting);
+                       const RenderOptions& options, const Lighting& lighting, const WeightedLengthTables* weighted) {
+  return render_tetrahedra(camera, mesh, &table, nullptr, options, lighting, weighted);
 }
 
 Image render_projected(const Camera& camera, const TetMesh& mesh, const CylindricalTable& table,
                        const RenderOptions& options, const Lighting& lighting) {
-  return render_tetrahedra(camera, mesh, nullptr, &table, options, lighting);
+  return render_tetrahedra(camera, mesh, nullptr, &table, options, lighting, nullptr);
 }
 
 }  // namespace vri
