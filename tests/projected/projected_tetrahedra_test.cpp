@@ -102,20 +102,30 @@ TEST(ProjectedTetrahedra, InterpolatedLightingMatchesRaycast) {
     ASSERT_EQ(0, std::memcmp(pt.data().data(), other.data().data(), pt.data().size() * sizeof(float)));
   }
   EXPECT_THROW(render_projected(cam, mesh, *table, {}, light), Error);
-  EXPECT_THROW(render_projected(cam, mesh, CylindricalTable(*table, tf(), 16, 16), {}, light), Error);
+  // pt-cylindrical reads the weighted tables resampled on its planes: close to
+  // pt (as unlit, CylindricalPlanesApproachPt); without them it refuses the mode.
+  const CylindricalTable cylinder(*table, tf(), 64, 64);
+  EXPECT_THROW(render_projected(cam, mesh, cylinder, {}, light), Error);
+  const WeightedCylindricalTables wc{CylindricalTable(weighted->front, tf(), 64, 64),
+                                     CylindricalTable(weighted->back, tf(), 64, 64)};
+  const Image cyl = render_projected(cam, mesh, cylinder, {.threads = 1}, light, &wc);
+  const Image cyl2 = render_projected(cam, mesh, cylinder, {.threads = 2, .tile_size = 7}, light, &wc);
+  ASSERT_EQ(0, std::memcmp(cyl.data().data(), cyl2.data().data(), cyl.data().size() * sizeof(float)));
   const Image sampled = render_projected(cam, mesh, *table, {}, {true, 0.3, 0.7, 0.4, 32, "sampled"});
   const TetRaycastIntegrator raycast(mesh, std::move(table), light, std::move(weighted));
-  double vs_raycast = 0, vs_sampled = 0;
+  double vs_raycast = 0, vs_sampled = 0, vs_cylinder = 0;
   for (int y = 0; y < 32; ++y)
     for (int x = 0; x < 32; ++x) {
       const Rgba a = raycast.integrate(cam.ray(x, y));
       for (int c = 0; c < 4; ++c) {
         vs_raycast = std::max(vs_raycast, std::abs(pt.pixel(x, y)[c] - a[c]));
         vs_sampled = std::max(vs_sampled, double(std::abs(pt.pixel(x, y)[c] - sampled.pixel(x, y)[c])));
+        vs_cylinder = std::max(vs_cylinder, double(std::abs(pt.pixel(x, y)[c] - cyl.pixel(x, y)[c])));
       }
     }
   EXPECT_LT(vs_raycast, 1e-5);
   EXPECT_GT(vs_sampled, 1e-3);  // the mode changes the image
+  EXPECT_LT(vs_cylinder, 0.01);  // measured 3.7e-3; the mode itself changes pixels by 8.4e-2
 }
 
 TEST(ProjectedTetrahedra, MatchesRaycastOnANonConvexMesh) {

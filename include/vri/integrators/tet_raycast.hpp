@@ -14,6 +14,7 @@
 #include "vri/mesh/tet_walk.hpp"
 #include "vri/shading/chord_lighting.hpp"
 #include "vri/tables/slab_table.hpp"
+#include "vri/tables/weighted_tables.hpp"
 
 namespace vri {
 

@@ -23,7 +23,7 @@
 // plane) are not drawn: keep the eye outside the mesh.
 // Lit (SPEC §5): each fragment's chord from front to back point is lit by
 // ChordLighting: one normal (mode `sampled`), or the shading at both ends
-// weighting the weighted tables (mode `interpolated`, pt only).
+// weighting the weighted tables (mode `interpolated`).
 #include "vri/camera/camera.hpp"
 #include "vri/mesh/tet_mesh.hpp"
 #include "vri/render/image.hpp"
@@ -41,8 +41,10 @@ Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTabl
                        const RenderOptions& options = {}, const Lighting& lighting = {},
                        const WeightedLengthTables* weighted = nullptr);
 // pt-cylindrical: the same, each tetrahedron read from the two cylinder planes
-// next to its thick vertex's plane (2D lookups, Roettger & Ertl 2002, Sec. 4).
+// next to its thick vertex's plane (2D lookups, Roettger & Ertl 2002, Sec. 4);
+// in mode interpolated the weighted tables on the same planes.
 Image render_projected(const Camera& camera, const TetMesh& mesh, const CylindricalTable& table,
-                       const RenderOptions& options = {}, const Lighting& lighting = {});
+                       const RenderOptions& options = {}, const Lighting& lighting = {},
+                       const WeightedCylindricalTables* weighted = nullptr);
 
 }  // namespace vri
