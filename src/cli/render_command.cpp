@@ -96,14 +96,21 @@ int run_render(const RenderArgs& args) {
   const bool projected = name == "pt" || name == "pt-cylindrical";
   std::unique_ptr<Integrator> integrator;
   std::unique_ptr<SlabTable> table;
+  std::unique_ptr<WeightedLengthTables> weighted;  // lighting mode interpolated
   std::optional<CylindricalTable> cylinder;
+  std::optional<WeightedCylindricalTables> weighted_cylinder;
   if (projected) {
     if (scene.method.fast.termination != 0)
       throw Error(name + ": early ray termination is not supported yet; it works in riemann, preint1 and preint2");
     table = make_slab_table(scene.method, scene.mesh(), scene.transfer_function);
-    if (name == "pt-cylindrical")
-      cylinder.emplace(*table, scene.transfer_function, scene.method.table_size,
-                       scene.method.planes > 0 ? scene.method.planes : scene.method.table_size);
+    weighted = make_weighted_length_tables(scene.method, scene.mesh(), scene.transfer_function, scene.lighting);
+    if (name == "pt-cylindrical") {
+      const int size = scene.method.table_size, planes = scene.method.planes > 0 ? scene.method.planes : size;
+      cylinder.emplace(*table, scene.transfer_function, size, planes);
+      if (weighted)
+        weighted_cylinder.emplace(CylindricalTable(weighted->front, scene.transfer_function, size, planes),
+                                  CylindricalTable(weighted->back, scene.transfer_function, size, planes));
+    }
   } else {
     integrator = std::visit(
         [&](const auto& volume) {
@@ -126,8 +133,9 @@ int run_render(const RenderArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();  // process CPU time, all threads
   const RenderOptions options{.threads = args.threads};
-  const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options, scene.lighting)
-                      : projected ? render_projected(camera, scene.mesh(), *table, options, scene.lighting)
+  const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options, scene.lighting,
+                                                   weighted_cylinder ? &*weighted_cylinder : nullptr)
+                      : projected ? render_projected(camera, scene.mesh(), *table, options, scene.lighting, weighted.get())
                                   : render(camera, *integrator, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;

@@ -12,6 +12,7 @@
 #include "vri/integrators/preint2_dual.hpp"
 #include "vri/integrators/tet_raycast.hpp"
 #include "vri/tables/table_builder.hpp"
+#include "vri/tables/weighted_tables.hpp"
 #include "vri/integrators/riemann.hpp"
 
 namespace vri {
@@ -79,7 +80,8 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMes
     throw Error(spec.name + ": early ray termination is not supported on tetrahedral meshes yet");
   if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance, lighting);
   if (spec.name == "tet-raycast")
-    return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf), lighting);
+    return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf), lighting,
+                                                  make_weighted_length_tables(spec, mesh, tf, lighting));
   if (spec.name == "pt" || spec.name == "pt-cylindrical")
     throw Error("method '" + spec.name + "' projects whole tetrahedra; it has no per-ray integrator");
   if (!is_mesh_method(spec.name) && is_known(spec.name))
@@ -91,6 +93,14 @@ std::unique_ptr<SlabTable> make_slab_table(const MethodSpec& spec, const TetMesh
   const DiscreteTf discrete(tf, spec.table_size);
   return std::make_unique<LengthTable>(
       build_length_table(*make_table_builder(spec.builder), discrete, spec.length_samples, mesh.max_edge_length()));
+}
+
+std::unique_ptr<WeightedLengthTables> make_weighted_length_tables(const MethodSpec& spec, const TetMesh& mesh,
+                                                                  const TransferFunction& tf,
+                                                                  const Lighting& lighting) {
+  if (!lighting.enabled || lighting.mode != "interpolated") return nullptr;
+  return std::make_unique<WeightedLengthTables>(
+      build_weighted_length_tables(DiscreteTf(tf, spec.table_size), spec.length_samples, mesh.max_edge_length()));
 }
 
 }  // namespace vri
