@@ -1,10 +1,12 @@
 // DiagonalSweep (incremental_diagonals.hpp): incremental subrange integration
 // along one diagonal (Lum, Wilson & Ma 2004, §4.2, Figs. 4-5), each piece's
 // premultiplied (C, alpha) one vector of 4 doubles.
-// 4-double vectors are inlined into the cloned functions below (and
-// thin_piece_weights): no vector crosses a call, so GCC's warning that their
-// ABI differs without AVX does not apply.
-#pragma GCC diagnostic ignored "-Wpsabi"
+// 4-double vectors must never cross a call: the AVX2 clone passes them in ymm
+// registers, a baseline callee expects them in memory. So the cloned
+// functions are `flatten` (thin_piece_weights and every helper inlined into
+// each clone, at any optimisation level - without it an -O2 sanitizer build
+// called an out-of-line baseline thin_piece_weights from the AVX2 clone and
+// got wrong tables), and GCC's -Wpsabi note stays on as the alarm.
 
 #include "incremental_diagonals.hpp"
 
@@ -40,7 +42,7 @@ VRI_INLINE V4 over(const V4& front, const V4& back) {
 
 // The series (piece_weights.hpp) four pieces at a time, then the pieces too
 // thick for it again by quadrature: thick_piece_weights.
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void diagonal_weights(const Pieces& pieces, double d,
+__attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void diagonal_weights(const Pieces& pieces, double d,
                                                                                 DiagonalSweep::Weights& w) {
   const int count = pieces.size() - 1;
   const double* tau = pieces.tau.data();
@@ -124,13 +126,13 @@ VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep
   }
 }
 
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_doubles(
+__attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void composite_doubles(
     const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s, SlabRgba* upper,
     SlabRgba* lower) {
   composite_diagonal(c, m, w, s, upper, lower, 1);
 }
 
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_floats(
+__attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void composite_floats(
     const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s, float* upper,
     float* lower, std::ptrdiff_t stride) {
   composite_diagonal(c, m, w, s, upper, lower, stride);

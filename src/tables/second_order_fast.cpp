@@ -142,14 +142,14 @@ __attribute__((always_inline)) inline void composite_lanes_impl(const PaddedTf& 
   }
 }
 
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_lanes(const PaddedTf& tf,
+__attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void composite_lanes(const PaddedTf& tf,
                                                                                const int* index,
                                                                                const float* weight,
                                                                                int iterations, LaneResults& out) {
   composite_lanes_impl<false>(tf, index, weight, nullptr, iterations, out);
 }
 
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void composite_lanes_weighted(
+__attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void composite_lanes_weighted(
     const PaddedTf& tf, const int* index, const float* weight, const SubstepWeights& lagrange, int iterations,
     LaneResults& out) {
   composite_lanes_impl<true>(tf, index, weight, &lagrange, iterations, out);
