@@ -74,6 +74,19 @@ struct Leap {
   double termination = 0;             // 0: never stop early
 };
 
+// From sample k at t = t0 + k h (k < full): the sample the march may leap
+// to, j > k when the ray stands in a run of empty macro cells (the slabs
+// between samples k .. j read zero entries), else k. Queries only once t
+// passes t_check, the end of the last run found, which it then updates.
+inline long long leap_target(const Leap& leap, const Ray& ray, const Interval& iv, double h, long long k,
+                             long long full, double& t_check) {
+  const double t = iv.t0 + k * h;
+  if (!leap.space || t < t_check) return k;
+  const EmptySpace::Run run = leap.space->run(ray, t, iv.t1);
+  t_check = run.t_end;
+  return run.empty ? std::min(full, static_cast<long long>(std::floor((run.t_end - iv.t0) / h))) : k;
+}
+
 template <int Samples, class Policy, class Prefetch = NoPrefetch>
 Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, const Policy& policy,
                          Prefetch&& prefetch = {}, const Leap& leap = {}) {
@@ -100,18 +113,11 @@ Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, con
   for (long long k = 0; k < full; ++k) {
     if (acc.T < leap.termination) return acc.result();
     if constexpr (Samples == 2) {
-      const double t = iv->t0 + k * h;
-      if (leap.space && t >= t_check) {
-        const EmptySpace::Run run = leap.space->run(ray, t, iv->t1);
-        t_check = run.t_end;
-        // In an empty run the slabs between samples k .. j read zero entries.
-        const long long j = run.empty ? std::min(full, static_cast<long long>(std::floor((run.t_end - iv->t0) / h))) : k;
-        if (j > k) {
-          k = j;
-          s[0] = sample_at(iv->t0 + k * h);
-          if (k == full) break;
-          fill(s, k);
-        }
+      if (const long long j = leap_target(leap, ray, *iv, h, k, full, t_check); j > k) {
+        k = j;
+        s[0] = sample_at(iv->t0 + k * h);
+        if (k == full) break;
+        fill(s, k);
       }
     }
     next[0] = s[steps];

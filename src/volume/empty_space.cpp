@@ -9,7 +9,8 @@ namespace vri {
 EmptySpace::EmptySpace(const MacroCells& cells, const ZeroOpacity& zero)
     : cells_(cells), empty_(cells.count(), 0) {
   const GridVolume& v = cells.volume();
-  const double margin = 1e-6 * (double(v.max_value()) - v.min_value());
+  const double largest = std::max(std::abs(double(v.min_value())), std::abs(double(v.max_value())));
+  const double margin = 1e-5 * (double(v.max_value()) - v.min_value() + largest);
   for (std::size_t i = 0; i < empty_.size(); ++i)
     empty_[i] = zero.over(cells.min(i) - margin, cells.max(i) + margin) ? 1 : 0;
 }
