@@ -38,7 +38,9 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
   Float4 C = {0, 0, 0, 0};
   float T = 1;
   const auto result = [&] { return Rgba{C[0], C[1], C[2], 1 - T}; };
-  float front = sample(0);
+  // Samples k and k + 1 are in hand at slab k; sample k + 2 is taken and the
+  // entries of slab k + 1 prefetched before slab k is composited.
+  float front = sample(0), back = full > 0 ? sample(1) : 0;
   double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
   for (long long k = 0; k < full; ++k) {
     if (T < termination) return result();
@@ -46,12 +48,15 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
       k = j;
       front = sample(k);
       if (k == full) break;
+      back = sample(k + 1);
     }
-    const float back = sample(k + 1);
+    const float next = k + 2 <= full ? sample(k + 2) : 0;
+    table.prefetch(back, next);
     const Float4 v = table(front, back);
     C += T * v;
     T *= 1 - v[3];
     front = back;
+    back = next;
   }
   if (T < termination) return result();
   const double sub = iv->t1 - (iv->t0 + full * h);

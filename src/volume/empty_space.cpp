@@ -25,19 +25,20 @@ EmptySpace::Run EmptySpace::run(const Ray& ray, double t, double t_max) const {
   const auto& m = cells_.dims();
   const Vec3 p = ray.at(t);
   int cell[3], step[3];
-  double width[3];  // macro cell width, world units
+  double width[3], inverse[3];  // macro cell width, world units; 1 / ray direction
   for (int a = 0; a < 3; ++a) {
     // The grid cell that GridVolume::sample interpolates in, and its macro cell.
     const double u = std::clamp((p[a] - v.origin()[a]) / v.spacing()[a], 0.0, double(n[a] - 1));
     cell[a] = std::min(static_cast<int>(u), n[a] - 2) / MacroCells::kCells;
     step[a] = ray.dir[a] > 0 ? 1 : ray.dir[a] < 0 ? -1 : 0;
     width[a] = MacroCells::kCells * v.spacing()[a];
+    inverse[a] = step[a] != 0 ? 1 / ray.dir[a] : 0;
   }
   // t at which the ray leaves the current macro cell through the face on axis a.
   const auto exit = [&](int a) {
     if (step[a] == 0) return std::numeric_limits<double>::infinity();
     const double face = v.origin()[a] + (cell[a] + (step[a] > 0 ? 1 : 0)) * width[a];
-    return (face - ray.origin[a]) / ray.dir[a];
+    return (face - ray.origin[a]) * inverse[a];
   };
   double leave[3] = {exit(0), exit(1), exit(2)};
   const auto next = [&] {  // the axis whose face the ray crosses first
