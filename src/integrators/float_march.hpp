@@ -5,7 +5,8 @@
 // in float. Sample k sits at grid position u0 + k du (u0 the ray's entry,
 // du = h dir / spacing, in double: one multiply-add per axis, the same point
 // whether the ray got there step by step or by a leap), is interpolated by
-// FloatSampler, each slab is one FloatLookup of the first-order table, and
+// FloatSampler, each slab is one FloatLookup of the first-order table (found
+// one slab ahead, so its entries load while the slab before is composited), and
 // the slabs are composited front to back in float. The partial last slab is
 // integrated exactly as on the double path (exact_slab). Leaps over empty
 // macro cells and early termination are those of march_uniform_slabs.
@@ -38,9 +39,11 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
   Float4 C = {0, 0, 0, 0};
   float T = 1;
   const auto result = [&] { return Rgba{C[0], C[1], C[2], 1 - T}; };
-  // Samples k and k + 1 are in hand at slab k; sample k + 2 is taken and the
-  // entries of slab k + 1 prefetched before slab k is composited.
+  // Samples k and k + 1 are in hand at slab k, and the table spot of slab k
+  // found; sample k + 2 is taken and slab k + 1's spot found (its entries
+  // start loading) before slab k is composited.
   float front = sample(0), back = full > 0 ? sample(1) : 0;
+  FloatLookup::Spot spot = table.find(front, back);
   double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
   for (long long k = 0; k < full; ++k) {
     if (T < termination) return result();
@@ -49,14 +52,16 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
       front = sample(k);
       if (k == full) break;
       back = sample(k + 1);
+      spot = table.find(front, back);
     }
     const float next = k + 2 <= full ? sample(k + 2) : 0;
-    table.prefetch(back, next);
-    const Float4 v = table(front, back);
+    const FloatLookup::Spot following = table.find(back, next);
+    const Float4 v = table.blend(spot);
     C += T * v;
     T *= 1 - v[3];
     front = back;
     back = next;
+    spot = following;
   }
   if (T < termination) return result();
   const double sub = iv->t1 - (iv->t0 + full * h);

@@ -18,35 +18,39 @@ class FloatLookup {
   explicit FloatLookup(const PreintegrationTable& table)
       : data_(table.data().data()),
         n_(table.size()),
+        row_(4 * static_cast<std::size_t>(n_)),
         lo_(static_cast<float>(table.axis().s_lo)),
         scale_(table.axis().s_hi > table.axis().s_lo
                    ? static_cast<float>((n_ - 1) / (table.axis().s_hi - table.axis().s_lo))
                    : 0.0f),
         top_(static_cast<float>(n_ - 1)) {}
 
-  // Bilinear in the continuous indices of s_f and s_b: premultiplied (r, g, b, alpha).
-  Float4 operator()(float s_f, float s_b) const {
+  // Where a lookup at (s_f, s_b) reads, and the weights of what it reads;
+  // finding it starts loading the entries, so a march can find the next
+  // slab's spot before it blends the current one.
+  struct Spot {
+    const float* entry;  // (f, b); the others are (f, b + 1), (f + 1, b), (f + 1, b + 1)
+    float wf, wb;
+  };
+  Spot find(float s_f, float s_b) const {
     const float uf = index(s_f), ub = index(s_b);
     const int f = cell(uf), b = cell(ub);
-    const float wf = uf - f, wb = ub - b;
-    const float* e = entry(f, b);
-    const std::size_t row = 4 * static_cast<std::size_t>(n_);
-    const Float4 e00 = load(e), e01 = load(e + 4), e10 = load(e + row), e11 = load(e + row + 4);
-    const Float4 front = e00 + wb * (e01 - e00), back = e10 + wb * (e11 - e10);
-    return front + wf * (back - front);
-  }
-
-  // Starts loading the entries a later lookup at (s_f, s_b) reads.
-  void prefetch(float s_f, float s_b) const {
-    const float* e = entry(cell(index(s_f)), cell(index(s_b)));
+    const float* e = data_ + 4 * (static_cast<std::size_t>(f) * n_ + b);
     __builtin_prefetch(e);
-    __builtin_prefetch(e + 4 * static_cast<std::size_t>(n_));
+    __builtin_prefetch(e + row_);
+    return {e, uf - f, ub - b};
+  }
+  // Bilinear in the continuous indices of s_f and s_b: premultiplied (r, g, b, alpha).
+  Float4 blend(const Spot& spot) const {
+    const float* e = spot.entry;
+    const Float4 e00 = load(e), e01 = load(e + 4), e10 = load(e + row_), e11 = load(e + row_ + 4);
+    const Float4 front = e00 + spot.wb * (e01 - e00), back = e10 + spot.wb * (e11 - e10);
+    return front + spot.wf * (back - front);
   }
 
  private:
   float index(float s) const { return std::clamp((s - lo_) * scale_, 0.0f, top_); }
   int cell(float u) const { return std::min(static_cast<int>(u), n_ - 2); }
-  const float* entry(int f, int b) const { return data_ + 4 * (static_cast<std::size_t>(f) * n_ + b); }
   static Float4 load(const float* p) {
     Float4 v;
     std::memcpy(&v, p, sizeof v);
@@ -54,6 +58,7 @@ class FloatLookup {
   }
   const float* data_;
   int n_;
+  std::size_t row_;  // floats per table row
   float lo_, scale_, top_;
 };
 
