@@ -34,7 +34,14 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
   if (!iv) return {0, 0, 0, 0};
   const long long full = static_cast<long long>(std::floor(iv->length() / h));
   const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
-  const auto sample = [&](long long k) { return sampler.at(u0 + static_cast<double>(k) * du); };
+  struct Point {
+    float s;
+    FloatLookup::Place place;
+  };
+  const auto sample = [&](long long k) {
+    const float s = sampler.at(u0 + static_cast<double>(k) * du);
+    return Point{s, table.place(s)};
+  };
   const float termination = static_cast<float>(leap.termination);
   Float4 C = {0, 0, 0, 0};
   float T = 1;
@@ -42,8 +49,8 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
   // Samples k and k + 1 are in hand at slab k, and the table spot of slab k
   // found; sample k + 2 is taken and slab k + 1's spot found (its entries
   // start loading) before slab k is composited.
-  float front = sample(0), back = full > 0 ? sample(1) : 0;
-  FloatLookup::Spot spot = table.find(front, back);
+  Point front = sample(0), back = full > 0 ? sample(1) : front;
+  FloatLookup::Spot spot = table.find(front.place, back.place);
   double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
   for (long long k = 0; k < full; ++k) {
     if (T < termination) return result();
@@ -52,10 +59,10 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
       front = sample(k);
       if (k == full) break;
       back = sample(k + 1);
-      spot = table.find(front, back);
+      spot = table.find(front.place, back.place);
     }
-    const float next = k + 2 <= full ? sample(k + 2) : 0;
-    const FloatLookup::Spot following = table.find(back, next);
+    const Point next = k + 2 <= full ? sample(k + 2) : back;
+    const FloatLookup::Spot following = table.find(back.place, next.place);
     const Float4 v = table.blend(spot);
     C += T * v;
     T *= 1 - v[3];
@@ -66,7 +73,7 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
   if (T < termination) return result();
   const double sub = iv->t1 - (iv->t0 + full * h);
   if (sub > 0) {
-    const SlabRgba v = exact_slab(tf, front, sampler.at(sampler.grid(ray.at(iv->t1))), sub);
+    const SlabRgba v = exact_slab(tf, front.s, sampler.at(sampler.grid(ray.at(iv->t1))), sub);
     C += T * Float4{static_cast<float>(v.r), static_cast<float>(v.g), static_cast<float>(v.b), 0};
     T *= 1 - static_cast<float>(v.a);
   }

@@ -25,20 +25,29 @@ class FloatLookup {
                    : 0.0f),
         top_(static_cast<float>(n_ - 1)) {}
 
-  // Where a lookup at (s_f, s_b) reads, and the weights of what it reads;
-  // finding it starts loading the entries, so a march can find the next
-  // slab's spot before it blends the current one.
+  // A scalar's place on the table axis: entry i and the weight w of entry i + 1
+  // (found once per sample: it serves the slabs on both sides).
+  struct Place {
+    int i;
+    float w;
+  };
+  Place place(float s) const {
+    const float u = std::clamp((s - lo_) * scale_, 0.0f, top_);
+    const int i = std::min(static_cast<int>(u), n_ - 2);
+    return {i, u - i};
+  }
+  // Where the lookup of a slab from front to back reads, and the weights of
+  // what it reads; finding it starts loading the entries, so a march can find
+  // the next slab's spot before it blends the current one.
   struct Spot {
     const float* entry;  // (f, b); the others are (f, b + 1), (f + 1, b), (f + 1, b + 1)
     float wf, wb;
   };
-  Spot find(float s_f, float s_b) const {
-    const float uf = index(s_f), ub = index(s_b);
-    const int f = cell(uf), b = cell(ub);
-    const float* e = data_ + 4 * (static_cast<std::size_t>(f) * n_ + b);
+  Spot find(Place front, Place back) const {
+    const float* e = data_ + 4 * (static_cast<std::size_t>(front.i) * n_ + back.i);
     __builtin_prefetch(e);
     __builtin_prefetch(e + row_);
-    return {e, uf - f, ub - b};
+    return {e, front.w, back.w};
   }
   // Bilinear in the continuous indices of s_f and s_b: premultiplied (r, g, b, alpha).
   Float4 blend(const Spot& spot) const {
@@ -49,8 +58,6 @@ class FloatLookup {
   }
 
  private:
-  float index(float s) const { return std::clamp((s - lo_) * scale_, 0.0f, top_); }
-  int cell(float u) const { return std::min(static_cast<int>(u), n_ - 2); }
   static Float4 load(const float* p) {
     Float4 v;
     std::memcpy(&v, p, sizeof v);
