@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <type_traits>
 
 namespace vri {
 
@@ -40,20 +42,36 @@ EmptySpace::Run EmptySpace::run(const Ray& ray, double t, double t_max) const {
     const double face = v.origin()[a] + (cell[a] + (step[a] > 0 ? 1 : 0)) * width[a];
     return (face - ray.origin[a]) * inverse[a];
   };
-  double leave[3] = {exit(0), exit(1), exit(2)};
-  const auto next = [&] {  // the axis whose face the ray crosses first
-    return leave[0] <= leave[1] ? (leave[0] <= leave[2] ? 0 : 2) : (leave[1] <= leave[2] ? 1 : 2);
-  };
   // Walk while the cells are as the first one (empty or not): the run ends where that changes.
-  const bool is_empty = empty(cells_.index(cell[0], cell[1], cell[2]));
-  for (;;) {
-    const int a = next();
-    if (leave[a] >= t_max) return {is_empty, t_max};
-    cell[a] += step[a];
-    if (cell[a] < 0 || cell[a] >= m[a]) return {is_empty, t_max};
-    if (empty(cells_.index(cell[0], cell[1], cell[2])) != is_empty) return {is_empty, leave[a]};
-    leave[a] = exit(a);
+  std::size_t index = cells_.index(cell[0], cell[1], cell[2]);
+  const bool is_empty = empty(index);
+  const std::ptrdiff_t stride[3] = {step[0], step[1] * std::ptrdiff_t{m[0]},
+                                    step[2] * std::ptrdiff_t{m[0]} * m[1]};
+  Run end{is_empty, t_max};
+  // Crosses the face on axis A at t = leave into the next macro cell; false
+  // when the walk ends there (`end` says where). One function per axis, so
+  // the three exit times and cells stay in registers.
+  const auto cross = [&](auto axis, double& leave) {
+    constexpr int A = decltype(axis)::value;
+    if (leave >= t_max) return false;
+    cell[A] += step[A];
+    if (cell[A] < 0 || cell[A] >= m[A]) return false;
+    index += stride[A];
+    if (empty(index) != is_empty) {
+      end.t_end = leave;
+      return false;
+    }
+    leave = exit(A);
+    return true;
+  };
+  using X = std::integral_constant<int, 0>;
+  using Y = std::integral_constant<int, 1>;
+  using Z = std::integral_constant<int, 2>;
+  double l0 = exit(0), l1 = exit(1), l2 = exit(2);
+  // The face the ray crosses first (the lower axis on ties).
+  while (l0 <= l1 ? (l0 <= l2 ? cross(X{}, l0) : cross(Z{}, l2)) : (l1 <= l2 ? cross(Y{}, l1) : cross(Z{}, l2))) {
   }
+  return end;
 }
 
 }  // namespace vri
