@@ -52,8 +52,7 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
   Point front = sample(0), back = full > 0 ? sample(1) : front;
   FloatLookup::Spot spot = table.find(front.place, back.place);
   double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
-  for (long long k = 0; k < full; ++k) {
-    if (T < termination) return result();
+  for (long long k = 0; k < full;) {
     if (const long long j = leap_target(leap, ray, *iv, h, k, full, t_check); j > k) {
       k = j;
       front = sample(k);
@@ -61,14 +60,21 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
       back = sample(k + 1);
       spot = table.find(front.place, back.place);
     }
-    const Point next = k + 2 <= full ? sample(k + 2) : back;
-    const FloatLookup::Spot following = table.find(back.place, next.place);
-    const Float4 v = table.blend(spot);
-    C += T * v;
-    T *= 1 - v[3];
-    front = back;
-    back = next;
-    spot = following;
+    // Slabs k .. stop - 1 start before t_check, where the next leap query is
+    // due (all of them without skipping): they need no query.
+    const long long stop =
+        leap.space ? std::clamp(static_cast<long long>(std::ceil((t_check - iv->t0) / h)), k + 1, full) : full;
+    for (; k < stop; ++k) {
+      if (T < termination) return result();
+      const Point next = k + 2 <= full ? sample(k + 2) : back;
+      const FloatLookup::Spot following = table.find(back.place, next.place);
+      const Float4 v = table.blend(spot);
+      C += T * v;
+      T *= 1 - v[3];
+      front = back;
+      back = next;
+      spot = following;
+    }
   }
   if (T < termination) return result();
   const double sub = iv->t1 - (iv->t0 + full * h);
