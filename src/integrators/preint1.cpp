@@ -31,9 +31,15 @@ Rgba Preint1Integrator::integrate(const Ray& ray) const {
   using Table = PreintegrationTable;
   const detail::Leap leap{fast_.space(), fast_.termination()};
   const detail::NoPrefetch none;
+  if (weighted_ && float_math_)
+    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Interpolated1{{tf_, *shader_, ray.dir}, *weighted_}, none,
+                                  leap, detail::FloatScalar{float_sampler_});
   if (weighted_)
     return march_uniform_slabs<2>(volume_, ray, h_, slabs::Interpolated1{{tf_, *shader_, ray.dir}, *weighted_}, none,
                                   leap);
+  if (shader_ && float_math_)
+    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Sampled<2, FloatLookup>{float_table_, tf_, *shader_, ray.dir},
+                                  none, leap, detail::FloatScalar{float_sampler_});
   if (shader_)
     return march_uniform_slabs<2>(volume_, ray, h_, slabs::Sampled<2, Table>{table_, tf_, *shader_, ray.dir}, none,
                                   leap);

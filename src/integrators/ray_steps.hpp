@@ -24,6 +24,7 @@
 #include "vri/core/ray.hpp"
 #include "vri/core/rgba.hpp"
 #include "vri/volume/empty_space.hpp"
+#include "vri/volume/float_sampler.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri::detail {
@@ -87,9 +88,19 @@ inline long long leap_target(const Leap& leap, const Ray& ray, const Interval& i
   return run.empty ? std::min(full, static_cast<long long>(std::floor((run.t_end - iv.t0) / h))) : k;
 }
 
-template <int Samples, class Policy, class Prefetch = NoPrefetch>
+// The scalar at a sample: GridVolume::sample, or FloatSampler's (preint1's
+// float path, float_march.hpp).
+struct GridScalar {
+  double operator()(const GridVolume& volume, Vec3 p) const { return volume.sample(p); }
+};
+struct FloatScalar {
+  const FloatSampler& sampler;
+  double operator()(const GridVolume&, Vec3 p) const { return sampler.at(sampler.grid(p)); }
+};
+
+template <int Samples, class Policy, class Prefetch = NoPrefetch, class Scalar = GridScalar>
 Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, const Policy& policy,
-                         Prefetch&& prefetch = {}, const Leap& leap = {}) {
+                         Prefetch&& prefetch = {}, const Leap& leap = {}, const Scalar& scalar = {}) {
   static_assert(Samples >= 2);
   constexpr int steps = Samples - 1;
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
@@ -100,7 +111,7 @@ Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, con
   using Slab = std::array<Sample, Samples>;
   const auto sample_at = [&](double t) {
     const Vec3 p = ray.at(t);
-    return Sample{volume.sample(p), policy.at(p)};
+    return Sample{scalar(volume, p), policy.at(p)};
   };
   const auto fill = [&](Slab& s, long long k) {
     for (int i = 1; i < Samples; ++i) s[i] = sample_at(iv->t0 + (k * steps + i) * h);

@@ -75,6 +75,8 @@ TEST(FastPath, SkippingChangesNoBitWithLighting) {
     const MethodSpec spec{.name = "preint1", .step = 1};
     expect_same_bytes(render_with(scene, spec, kPlain, lighting), render_with(scene, spec, kSkip, lighting),
                       std::string("preint1 ") + mode);
+    expect_same_bytes(render_with(scene, spec, kPlainDouble, lighting),
+                      render_with(scene, spec, kSkipDouble, lighting), std::string("preint1 double ") + mode);
   }
   const MethodSpec spec{.name = "riemann", .step = 0.5};
   expect_same_bytes(render_with(scene, spec, kPlain, lighting), render_with(scene, spec, kSkip, lighting),
@@ -152,9 +154,10 @@ TEST(FastPath, TerminationChangesAPixelByAtMostItsThreshold) {
   }
 }
 
-// preint1's float path (float_march.hpp) against its double path, the
-// reference: within 1e-4 per channel on the bundled scenes, at two steps, and
-// not the same image (the float path is the one taken).
+// preint1's float path (float_march.hpp; lit: ray_steps.hpp's FloatScalar)
+// against its double path, the reference: within 1e-4 per channel on the
+// bundled scenes, at two steps, lit or not, and not the same image (the float
+// path is the one taken).
 TEST(FastPath, FloatPathIsWithin1e4OfTheDoublePath) {
   for (const char* file : {"scenes/neghip.json", "scenes/engine.json", "scenes/bonsai.json"}) {
     const Scene scene = small(file, 48);
@@ -164,6 +167,17 @@ TEST(FastPath, FloatPathIsWithin1e4OfTheDoublePath) {
       EXPECT_LE(worst, 1e-4) << file << " step " << step;
       EXPECT_GT(worst, 0) << file << " step " << step;
     }
+  }
+  // Lit: the scalar samples (both modes) and the table lookups (sampled) in float.
+  const Scene scene = small("scenes/neghip_lit.json", 48);
+  Lighting lighting = scene.lighting;
+  for (const char* mode : {"sampled", "interpolated"}) {
+    lighting.mode = mode;
+    const MethodSpec spec{.name = "preint1", .step = 1};
+    const double worst =
+        max_difference(render_with(scene, spec, kSkip, lighting), render_with(scene, spec, kSkipDouble, lighting));
+    EXPECT_LE(worst, 1e-4) << mode;
+    EXPECT_GT(worst, 0) << mode;
   }
 }
 

@@ -15,9 +15,9 @@
 //
 // FastPath (fast_path.hpp): the ray leaps over runs of empty macro cells from
 // sample to sample (whole steps, so on the same samples): every slab inside a
-// run reads zero table entries. It may stop once T < termination. Unlit, it
-// samples, looks up and composites in float unless fast.float_math is off
-// (float_march.hpp).
+// run reads zero table entries. It may stop once T < termination. Unless
+// fast.float_math is off it works in float: unlit, the whole march
+// (float_march.hpp); lit, the scalar samples and (sampled) the table lookups.
 #include <optional>
 #include <string>
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "vri/core/rgba.hpp"
 #include "vri/tables/preintegration_table.hpp"
 
 namespace vri {
@@ -55,6 +56,12 @@ class FloatLookup {
     const Float4 e00 = load(e), e01 = load(e + 4), e10 = load(e + row_), e11 = load(e + row_ + 4);
     const Float4 front = e00 + spot.wb * (e01 - e00), back = e10 + spot.wb * (e11 - e10);
     return front + spot.wf * (back - front);
+  }
+  // The same as a PreintegrationTable::lookup (the interface of the slab
+  // policies, slab_policies.hpp), in float.
+  Rgba lookup(double s_f, double s_b) const {
+    const Float4 v = blend(find(place(static_cast<float>(s_f)), place(static_cast<float>(s_b))));
+    return {v[0], v[1], v[2], v[3]};
   }
 
  private:
