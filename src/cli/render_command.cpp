@@ -97,14 +97,21 @@ int run_render(const RenderArgs& args) {
   const bool projected = name == "pt" || name == "pt-cylindrical";
   std::unique_ptr<Integrator> integrator;
   std::unique_ptr<SlabTable> table;
+  std::unique_ptr<WeightedLengthTables> weighted;  // lighting mode interpolated
   std::optional<CylindricalTable> cylinder;
+  std::optional<WeightedCylindricalTables> weighted_cylinder;
   if (projected) {
     if (scene.method.fast.termination != 0)
-      throw Error(name + ": early ray termination is not supported yet; it works in riemann and preint1");
+      throw Error(name + ": early ray termination is not supported yet; it works in riemann, preint1 and preint2");
     table = make_slab_table(scene.method, scene.mesh(), scene.transfer_function);
-    if (name == "pt-cylindrical")
-      cylinder.emplace(*table, scene.transfer_function, scene.method.table_size,
-                       scene.method.planes > 0 ? scene.method.planes : scene.method.table_size);
+    weighted = make_weighted_length_tables(scene.method, scene.mesh(), scene.transfer_function, scene.lighting);
+    if (name == "pt-cylindrical") {
+      const int size = scene.method.table_size, planes = scene.method.planes > 0 ? scene.method.planes : size;
+      cylinder.emplace(*table, scene.transfer_function, size, planes);
+      if (weighted)
+        weighted_cylinder.emplace(CylindricalTable(weighted->front, scene.transfer_function, size, planes),
+                                  CylindricalTable(weighted->back, scene.transfer_function, size, planes));
+    }
   } else {
     integrator = std::visit(
         [&](const auto& volume) {
@@ -127,8 +134,9 @@ int run_render(const RenderArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();  // process CPU time, all threads
   const RenderOptions options{.threads = args.threads};
-  const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options, scene.lighting)
-                      : projected ? render_projected(camera, scene.mesh(), *table, options, scene.lighting)
+  const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options, scene.lighting,
+                                                   weighted_cylinder ? &*weighted_cylinder : nullptr)
+                      : projected ? render_projected(camera, scene.mesh(), *table, options, scene.lighting, weighted.get())
                                   : render(camera, *integrator, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
@@ -166,8 +174,9 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--table-size", args->table_size, "Pre-integration table size");
   cmd->add_option("--iterations", args->iterations, "preint2*: parabola steps per table entry (1..4096)");
   cmd->add_option("--termination", args->termination,
-                  "riemann, preint1: stop a ray once its transmittance is below this (0: off)");
-  cmd->add_flag("--no-skip", args->no_skip, "riemann, preint1: march through empty space too (the plain path)");
+                  "riemann, preint1, preint2: stop a ray once its transmittance is below this (0: off)");
+  cmd->add_flag("--no-skip", args->no_skip,
+                "riemann, preint1, preint2: march through empty space too (the plain path)");
   cmd->add_flag("--double", args->double_math, "preint1: sample, look up and composite in double (the reference of its float path)");
   cmd->add_option("--width", args->width, "Image width in pixels");
   cmd->add_option("--height", args->height, "Image height in pixels");

@@ -53,7 +53,7 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
   FloatLookup::Spot spot = table.find(front.place, back.place);
   double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
   for (long long k = 0; k < full;) {
-    if (const long long j = leap_target(leap, ray, *iv, h, k, full, t_check); j > k) {
+    if (const long long j = leap_target(leap, ray, *iv, h, 1, k, full, t_check); j > k) {
       k = j;
       front = sample(k);
       if (k == full) break;

@@ -12,6 +12,7 @@
 #include "vri/integrators/preint2_dual.hpp"
 #include "vri/integrators/tet_raycast.hpp"
 #include "vri/tables/table_builder.hpp"
+#include "vri/tables/weighted_tables.hpp"
 #include "vri/integrators/riemann.hpp"
 
 namespace vri {
@@ -49,8 +50,11 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
   if (spec.name == "preint1")
     return std::make_unique<Preint1Integrator>(volume, tf, spec.step, spec.table_size, spec.builder, lighting,
                                                spec.fast);
+  if (spec.name == "preint2")
+    return std::make_unique<Preint2Integrator>(volume, tf, spec.step, spec.table_size, spec.iterations,
+                                               second_order_builder_name(spec.builder), lighting, spec.fast);
   if (spec.fast.termination != 0)
-    throw Error(spec.name + ": early ray termination is not supported yet; it works in riemann and preint1");
+    throw Error(spec.name + ": early ray termination is not supported yet; it works in riemann, preint1 and preint2");
   if (spec.name == "adaptive") {
     const AdaptiveParams p{spec.tolerance, spec.h0, spec.hmin, spec.hmax,
                            parse_adaptive_strategy(spec.strategy)};
@@ -59,13 +63,10 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
     return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p, lighting);
   }
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
-  if (spec.name == "preint2" || spec.name == "preint2-dual") {
-    const std::string builder = second_order_builder_name(spec.builder);
-    if (spec.name == "preint2")
-      return std::make_unique<Preint2Integrator>(volume, tf, spec.step, spec.table_size, spec.iterations, builder,
-                                                 lighting);
+  if (spec.name == "preint2-dual") {
     const int size = spec.table_size_given ? spec.table_size : Preint2DualIntegrator::kDefaultTableSize;
-    return std::make_unique<Preint2DualIntegrator>(volume, tf, size, spec.iterations, builder, lighting);
+    return std::make_unique<Preint2DualIntegrator>(volume, tf, size, spec.iterations,
+                                                   second_order_builder_name(spec.builder), lighting);
   }
   if (is_mesh_method(spec.name))
     throw Error("method '" + spec.name + "' needs a tetrahedral mesh (volume {\"file\": \"x.vtk\"} or " +
@@ -79,7 +80,8 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMes
     throw Error(spec.name + ": early ray termination is not supported on tetrahedral meshes yet");
   if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance, lighting);
   if (spec.name == "tet-raycast")
-    return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf), lighting);
+    return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf), lighting,
+                                                  make_weighted_length_tables(spec, mesh, tf, lighting));
   if (spec.name == "pt" || spec.name == "pt-cylindrical")
     throw Error("method '" + spec.name + "' projects whole tetrahedra; it has no per-ray integrator");
   if (!is_mesh_method(spec.name) && is_known(spec.name))
@@ -91,6 +93,14 @@ std::unique_ptr<SlabTable> make_slab_table(const MethodSpec& spec, const TetMesh
   const DiscreteTf discrete(tf, spec.table_size);
   return std::make_unique<LengthTable>(
       build_length_table(*make_table_builder(spec.builder), discrete, spec.length_samples, mesh.max_edge_length()));
+}
+
+std::unique_ptr<WeightedLengthTables> make_weighted_length_tables(const MethodSpec& spec, const TetMesh& mesh,
+                                                                  const TransferFunction& tf,
+                                                                  const Lighting& lighting) {
+  if (!lighting.enabled || lighting.mode != "interpolated") return nullptr;
+  return std::make_unique<WeightedLengthTables>(
+      build_weighted_length_tables(DiscreteTf(tf, spec.table_size), spec.length_samples, mesh.max_edge_length()));
 }
 
 }  // namespace vri

@@ -28,8 +28,11 @@ void prefetch_rows(const SecondOrderTable& table, const std::array<Sample, 3>& s
 
 Preint2Integrator::Preint2Integrator(const GridVolume& volume, const TransferFunction& tf, double step,
                                      int table_size, int iterations, const std::string& builder,
-                                     const Lighting& lighting)
-    : volume_(volume), h_(detail::world_step(volume, step, "preint2")), tf_(tf, table_size) {
+                                     const Lighting& lighting, const FastPath& fast)
+    : volume_(volume),
+      h_(detail::world_step(volume, step, "preint2")),
+      tf_(tf, table_size),
+      fast_(volume, ZeroOpacity(tf_, TableOrder::Second), fast, "preint2") {
   const auto make = make_second_order_builder(builder);
   if (lighting.enabled) {
     if (lighting.mode != "sampled" && lighting.mode != "interpolated")
@@ -46,19 +49,20 @@ const SecondOrderTable& Preint2Integrator::table() const { return weighted_ ? we
 
 Rgba Preint2Integrator::integrate(const Ray& ray) const {
   using detail::march_uniform_slabs;
+  const detail::Leap leap{fast_.space(), fast_.termination()};
   if (weighted_) {
     const auto prefetch = [&](const auto& s) {
       for (const SecondOrderTable* t : {&weighted_->full, &weighted_->middle, &weighted_->back}) prefetch_rows(*t, s);
     };
     return march_uniform_slabs<3>(volume_, ray, h_, slabs::Interpolated2{{tf_, *shader_, ray.dir}, *weighted_},
-                                  prefetch);
+                                  prefetch, leap);
   }
   const auto prefetch = [&](const auto& s) { prefetch_rows(*table_, s); };
   using Table = SecondOrderTable;
   if (shader_)
     return march_uniform_slabs<3>(volume_, ray, h_, slabs::Sampled<3, Table>{*table_, tf_, *shader_, ray.dir},
-                                  prefetch);
-  return march_uniform_slabs<3>(volume_, ray, h_, slabs::Unlit<3, Table>{*table_, tf_}, prefetch);
+                                  prefetch, leap);
+  return march_uniform_slabs<3>(volume_, ray, h_, slabs::Unlit<3, Table>{*table_, tf_}, prefetch, leap);
 }
 
 }  // namespace vri

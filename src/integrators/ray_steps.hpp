@@ -9,11 +9,12 @@
 // (exact_slab), so it is neither dropped nor counted twice and adds no length
 // interpolation error.
 //
-// Leap (preint1's fast path, fast_path.hpp): with slabs of one step, the march
-// jumps over runs of empty macro cells from sample to sample, so it stays on
-// the same samples and every slab it skips would read zero table entries; it
-// stops once T < termination. Slabs of more steps (preint2) do not leap: their
-// parabola can leave the range of their samples.
+// Leap (the fast path of preint1 and preint2, fast_path.hpp): the march jumps
+// over runs of empty macro cells from slab front to slab front, so it stays on
+// the same samples; every slab it skips has all its samples in the run and
+// would read zero table entries (for preint2's parabolas because the cells
+// were classified with TableOrder::Second, tables/zero_opacity.hpp). It stops
+// once T < termination.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -75,17 +76,20 @@ struct Leap {
   double termination = 0;             // 0: never stop early
 };
 
-// From sample k at t = t0 + k h (k < full): the sample the march may leap
-// to, j > k when the ray stands in a run of empty macro cells (the slabs
-// between samples k .. j read zero entries), else k. Queries only once t
-// passes t_check, the end of the last run found, which it then updates.
-inline long long leap_target(const Leap& leap, const Ray& ray, const Interval& iv, double h, long long k,
+// From slab k of `steps` steps of h (its front sample at t = t0 + k steps h,
+// k < full): the slab the march may leap to, j > k when the ray stands in a
+// run of empty macro cells (samples k steps .. i lie in the run, and slabs
+// k .. j - 1, whose samples are among them, read zero entries), else k.
+// Queries only once t passes t_check, the end of the last run found, which it
+// then updates.
+inline long long leap_target(const Leap& leap, const Ray& ray, const Interval& iv, double h, int steps, long long k,
                              long long full, double& t_check) {
-  const double t = iv.t0 + k * h;
+  const double t = iv.t0 + k * steps * h;
   if (!leap.space || t < t_check) return k;
   const EmptySpace::Run run = leap.space->run(ray, t, iv.t1);
   t_check = run.t_end;
-  return run.empty ? std::min(full, static_cast<long long>(std::floor((run.t_end - iv.t0) / h))) : k;
+  const long long i = static_cast<long long>(std::floor((run.t_end - iv.t0) / h));
+  return run.empty ? std::min(full, i / steps) : k;
 }
 
 // The scalar at a sample: GridVolume::sample, or FloatSampler's (preint1's
@@ -123,13 +127,11 @@ Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, con
   double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
   for (long long k = 0; k < full; ++k) {
     if (acc.T < leap.termination) return acc.result();
-    if constexpr (Samples == 2) {
-      if (const long long j = leap_target(leap, ray, *iv, h, k, full, t_check); j > k) {
-        k = j;
-        s[0] = sample_at(iv->t0 + k * h);
-        if (k == full) break;
-        fill(s, k);
-      }
+    if (const long long j = leap_target(leap, ray, *iv, h, steps, k, full, t_check); j > k) {
+      k = j;
+      s[0] = sample_at(iv->t0 + k * steps * h);
+      if (k == full) break;
+      fill(s, k);
     }
     next[0] = s[steps];
     if (k + 1 < full) {

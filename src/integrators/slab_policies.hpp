@@ -16,6 +16,7 @@
 #include "ray_steps.hpp"
 #include "vri/core/rgba.hpp"
 #include "vri/shading/headlight_shader.hpp"
+#include "vri/shading/lit_slab.hpp"
 #include "vri/tables/second_order_weighted.hpp"
 #include "vri/tables/slab_integral.hpp"
 #include "vri/tables/weighted_tables.hpp"
@@ -23,6 +24,8 @@
 namespace vri::slabs {
 
 using Terms = HeadlightShader::Terms;
+using vri::lit_by;  // lit_slab.hpp, shared with the mesh methods
+using vri::lit_weighted;
 
 inline Rgba rgba(const SlabRgba& v) { return {v.r, v.g, v.b, v.a}; }
 
@@ -40,21 +43,6 @@ Vec3 mean_gradient(const std::array<Sample, N>& s) {
   Vec3 sum = s[0].state;
   for (std::size_t i = 1; i < N; ++i) sum = sum + s[i].state;
   return sum * (1.0 / N);
-}
-
-// A pre-integrated slab lit by one normal's terms: C = a C + b alpha
-// (SPEC §5, c_lit = c a + b; Engel et al. 2001).
-inline Rgba lit_by(const Terms& t, const Rgba& v) {
-  return {v[0] * t.a + t.b * v[3], v[1] * t.a + t.b * v[3], v[2] * t.a + t.b * v[3], v[3]};
-}
-
-// First-order interpolated lighting (Lum, Wilson & Ma 2004, §3) from the
-// packed tables of their §5.1 (front = (D_front, alpha), back = (D_back, S_back)):
-//   C = a_f D_front + b_f S_front + a_b D_back + b_b S_back,   alpha = alpha_1.
-inline Rgba lit_weighted(Terms f, Terms b, const Rgba& front, const Rgba& back) {
-  const double specular = f.b * (front[3] - back[3]) + b.b * back[3];
-  return {f.a * front[0] + b.a * back[0] + specular, f.a * front[1] + b.a * back[1] + specular,
-          f.a * front[2] + b.a * back[2] + specular, front[3]};
 }
 
 // Second-order interpolated lighting from the packed weighted tables

@@ -5,18 +5,29 @@
 namespace vri {
 
 TetRaycastIntegrator::TetRaycastIntegrator(const TetMesh& mesh, std::unique_ptr<const SlabTable> table,
-                                           const Lighting& lighting)
-    : walk_(mesh), table_(std::move(table)) {
-  if (!table_ || table_->max_length() < mesh.max_edge_length())
+                                           const Lighting& lighting, std::unique_ptr<const WeightedLengthTables> weighted)
+    : walk_(mesh), table_(std::move(table)), weighted_(std::move(weighted)) {
+  if (!table_ || table_->max_length() < mesh.max_edge_length() ||
+      (weighted_ && weighted_->front.max_length() < mesh.max_edge_length()))
     throw Error("tet-raycast: the table must cover segments up to the longest edge of the mesh");
-  if (lighting.enabled) lighting_.emplace(mesh, lighting, "tet-raycast");
+  if (!lighting.enabled) return;
+  lighting_.emplace(mesh, lighting);
+  if (lighting_->interpolated() && !weighted_)
+    throw Error("tet-raycast: lighting mode 'interpolated' needs the weighted tables");
 }
 
 Rgba TetRaycastIntegrator::integrate(const Ray& ray) const {
   double T = 1, C[3] = {0, 0, 0};
   walk_.for_each_segment(ray, [&](const TetSegment& seg) {
-    Rgba v = table_->lookup(seg.tb - seg.ta, seg.s_front, seg.s_back);
-    if (lighting_) v = lighting_->apply(v, seg.tet, ray.at(seg.ta), ray.at(seg.tb), ray.dir);
+    const double l = seg.tb - seg.ta;
+    const auto look = [&](ChordTable t) {
+      const SlabTable& from = t == ChordTable::plain   ? *table_
+                              : t == ChordTable::front ? weighted_->front
+                                                       : weighted_->back;
+      return from.lookup(l, seg.s_front, seg.s_back);
+    };
+    const Rgba v = lighting_ ? lighting_->chord(look, seg.tet, ray.at(seg.ta), ray.at(seg.tb), ray.dir)
+                             : look(ChordTable::plain);
     for (int c = 0; c < 3; ++c) C[c] += T * v[c];
     T *= 1 - v[3];
     return T > 1e-7;

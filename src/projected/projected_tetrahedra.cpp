@@ -5,8 +5,10 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "vri/core/error.hpp"
@@ -60,9 +62,12 @@ bool owns(Point2 a, Point2 b, double sign) {
 
 class TileRaster {
  public:
-  // Exactly one of slab and cylinder is given.
-  // lighting: null when unlit.
-  TileRaster(const Camera& cam, const TetMesh& mesh, const SlabTable* slab, const CylindricalTable* cylinder,
+  // The plain table and, lit in mode interpolated, the weighted ones
+  // (indexed by ChordTable): slab tables, or cylinder planes (pt-cylindrical).
+  using SlabTables = std::array<const SlabTable*, 3>;
+  using CylinderTables = std::array<const CylindricalTable*, 3>;
+  // Exactly one of slab[0] and cylinder[0] is given. lighting: null when unlit.
+  TileRaster(const Camera& cam, const TetMesh& mesh, SlabTables slab, CylinderTables cylinder,
              const std::vector<Screen>& screen, Vec3 view, bool perspective, const ChordLighting* lighting)
       : cam_(cam), mesh_(mesh), slab_(slab), cylinder_(cylinder), screen_(screen), view_(view),
         perspective_(perspective), lighting_(lighting) {}
@@ -116,7 +121,7 @@ class TileRaster {
     }
     const Vertex thick{txy, pa, pb, sa, sb, da, db};
     // pt-cylindrical: the tetrahedron's cylinder plane, from its thick vertex (equation 10).
-    const double alpha = cylinder_ ? cylinder_->alpha(length(pb - pa), sa, sb) : 0;
+    const double alpha = cylinder_[0] ? cylinder_[0]->alpha(length(pb - pa), sa, sb) : 0;
     if (pr.kind == 1) {
       const auto& o = pr.others;
       for (int k = 0; k < 3; ++k) triangle(tet, alpha, thick, silhouette(o[k]), silhouette(o[(k + 1) % 3]), x0, y0, x1, y1, out);
@@ -166,31 +171,41 @@ class TileRaster {
         const Vec3 k = interpolate(la / weight_of(a.d_back), lb / weight_of(b.d_back), lc / weight_of(c.d_back),
                                    a.back, b.back, c.back, a.s_back, b.s_back, c.s_back, sbk);
         const double l = length(k - f);
-        Rgba v = cylinder_ ? cylinder_->lookup(alpha, l, sf, sbk) : slab_->lookup(l, sf, sbk);
+        const auto look = [&](ChordTable t) {
+          const auto i = static_cast<std::size_t>(t);
+          return cylinder_[0] ? cylinder_[i]->lookup(alpha, l, sf, sbk) : slab_[i]->lookup(l, sf, sbk);
+        };
+        // A silhouette pixel (l = 0) has no chord to light: the empty slab.
+        const Rgba v = lighting_ && l > 0 ? lighting_->chord(look, tet, f, k, (k - f) * (1 / l)) : look(ChordTable::plain);
         if (v[3] == 0 && v[0] == 0 && v[1] == 0 && v[2] == 0) continue;
-        if (lighting_ && l > 0) v = lighting_->apply(v, tet, f, k, (k - f) * (1 / l));
         out.push_back({y * W + x, tet, depth(f), {float(v[0]), float(v[1]), float(v[2]), float(v[3])}});
       }
   }
 
   const Camera& cam_;
   const TetMesh& mesh_;
-  const SlabTable* slab_;
-  const CylindricalTable* cylinder_;
+  SlabTables slab_;
+  CylinderTables cylinder_;
   const std::vector<Screen>& screen_;
   Vec3 view_;
   bool perspective_;
   const ChordLighting* lighting_;
 };
 
-Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, const SlabTable* slab,
-                        const CylindricalTable* cylinder, const RenderOptions& options, const Lighting& lighting) {
+Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, TileRaster::SlabTables slab,
+                        TileRaster::CylinderTables cylinder, const RenderOptions& options, const Lighting& lighting) {
   if (options.threads < 0) throw Error("thread count must be >= 0");
   if (options.tile_size <= 0) throw Error("tile size must be positive");
-  if ((slab ? slab->max_length() : cylinder->max_length()) < mesh.max_edge_length())
-    throw Error("pt: the table must cover segments up to the longest edge of the mesh");
   std::optional<ChordLighting> lit;
-  if (lighting.enabled) lit.emplace(mesh, lighting, slab ? "pt" : "pt-cylindrical");
+  if (lighting.enabled) lit.emplace(mesh, lighting);
+  const bool weighted = lit && lit->interpolated();
+  const char* method = slab[0] ? "pt" : "pt-cylindrical";
+  for (std::size_t t = 0; t < (weighted ? 3 : 1); ++t) {
+    if (!slab[t] && !cylinder[t])
+      throw Error(std::string(method) + ": lighting mode 'interpolated' needs the weighted tables");
+    if ((slab[t] ? slab[t]->max_length() : cylinder[t]->max_length()) < mesh.max_edge_length())
+      throw Error(std::string(method) + ": the table must cover segments up to the longest edge of the mesh");
+  }
   const CameraSpec& cs = camera.spec();
   const Vec3 view = normalize(cs.target - cs.eye);
   const bool perspective = cs.projection == Projection::Perspective;
@@ -269,13 +284,18 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, const SlabTab
 }  // namespace
 
 Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTable& table,
-                       const RenderOptions& options, const Lighting& lighting) {
-  return render_tetrahedra(camera, mesh, &table, nullptr, options, lighting);
+                       const RenderOptions& options, const Lighting& lighting, const WeightedLengthTables* weighted) {
+  return render_tetrahedra(camera, mesh,
+                           {&table, weighted ? &weighted->front : nullptr, weighted ? &weighted->back : nullptr}, {},
+                           options, lighting);
 }
 
 Image render_projected(const Camera& camera, const TetMesh& mesh, const CylindricalTable& table,
-                       const RenderOptions& options, const Lighting& lighting) {
-  return render_tetrahedra(camera, mesh, nullptr, &table, options, lighting);
+                       const RenderOptions& options, const Lighting& lighting,
+                       const WeightedCylindricalTables* weighted) {
+  return render_tetrahedra(camera, mesh, {},
+                           {&table, weighted ? &weighted->front : nullptr, weighted ? &weighted->back : nullptr},
+                           options, lighting);
 }
 
 }  // namespace vri

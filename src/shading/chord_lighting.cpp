@@ -1,29 +1,21 @@
 #include "vri/shading/chord_lighting.hpp"
 
-#include <string>
-
-#include "vri/core/error.hpp"
+#include "vri/shading/lit_slab.hpp"
 
 namespace vri {
 
-namespace {
+ChordLighting::ChordLighting(const TetMesh& mesh, const Lighting& lighting)
+    : gradients_(mesh), shader_(lighting, gradients_.flat_threshold()), interpolated_(lighting.mode == "interpolated") {}
 
-const Lighting& sampled_only(const Lighting& l, std::string_view method) {
-  if (l.mode != "sampled")
-    throw Error(std::string(method) + ": lighting mode '" + l.mode +
-                "' is not supported on tetrahedral meshes; use 'sampled'");
-  return l;
+Rgba ChordLighting::sampled(const Rgba& v, std::int32_t tet, Vec3 front, Vec3 back, Vec3 dir) const {
+  return lit_by(shader_.terms(0.5 * (gradients_.sample(tet, front) + gradients_.sample(tet, back)), dir), v);
 }
 
-}  // namespace
-
-ChordLighting::ChordLighting(const TetMesh& mesh, const Lighting& lighting, std::string_view method)
-    : gradients_(mesh), shader_(sampled_only(lighting, method), gradients_.flat_threshold()) {}
-
-Rgba ChordLighting::apply(const Rgba& v, std::int32_t tet, Vec3 front, Vec3 back, Vec3 dir) const {
-  const Vec3 g = 0.5 * (gradients_.sample(tet, front) + gradients_.sample(tet, back));
-  const auto t = shader_.terms(g, dir);
-  return {v[0] * t.a + t.b * v[3], v[1] * t.a + t.b * v[3], v[2] * t.a + t.b * v[3], v[3]};
+Rgba ChordLighting::weighted(const Rgba& front_w, const Rgba& back_w, std::int32_t tet, Vec3 front, Vec3 back,
+                             Vec3 dir) const {
+  // Lum et al. §3: the terms at the chord's two ends, linear between them.
+  return lit_weighted(shader_.terms(gradients_.sample(tet, front), dir),
+                      shader_.terms(gradients_.sample(tet, back), dir), front_w, back_w);
 }
 
 }  // namespace vri

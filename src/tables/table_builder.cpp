@@ -1,9 +1,6 @@
 #include "vri/tables/table_builder.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <cmath>
-#include <optional>
 #include <string>
 
 #include "vri/core/error.hpp"
@@ -16,22 +13,21 @@ namespace vri {
 
 LengthTable build_length_table(const TableBuilder& builder, const DiscreteTf& tf, int lengths,
                                double max_length) {
+  check_length_tables(lengths, max_length, tf.size(), 1);
+  return LengthTable(build_length_slices<PreintegrationTable>(
+                         lengths, max_length, [&](double l) { return builder.build(tf, l); },
+                         [&] { return PreintegrationTable(tf.axis(), 0); }),
+                     max_length);
+}
+
+void check_length_tables(int lengths, double max_length, int n, int tables) {
   if (lengths < 2) throw Error("--lengths must be >= 2, got " + std::to_string(lengths));
   if (!(max_length > 0) || !std::isfinite(max_length))
     throw Error("--max-length must be a positive number, got " + std::to_string(max_length));
-  const std::size_t n = tf.size();
-  if (static_cast<std::size_t>(lengths) * n * n > kMaxLengthTableEntries)
-    throw Error("a table of " + std::to_string(lengths) + " x " + std::to_string(n) + " x " +
-                std::to_string(n) + " entries is too large");
-  std::vector<std::optional<PreintegrationTable>> built(lengths);
-  tbb::parallel_for(0, lengths, [&](int m) {
-    const double l = max_length * m / (lengths - 1);
-    // Length 0 is the empty slab; builders take only positive lengths.
-    built[m] = m == 0 ? PreintegrationTable(tf.axis(), 0) : builder.build(tf, l);
-  });
-  std::vector<PreintegrationTable> slices;
-  for (auto& t : built) slices.push_back(std::move(*t));
-  return LengthTable(std::move(slices), max_length);
+  if (static_cast<std::size_t>(tables) * lengths * n * n > kMaxLengthTableEntries)
+    throw Error("a table of " + (tables > 1 ? std::to_string(tables) + " x " : std::string()) +
+                std::to_string(lengths) + " x " + std::to_string(n) + " x " + std::to_string(n) +
+                " entries is too large");
 }
 
 const std::vector<std::string>& known_builder_names() {

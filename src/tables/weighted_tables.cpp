@@ -96,6 +96,19 @@ WeightedTables brute_weighted_tables(const DiscreteTf& tf, double length) {
   return t;
 }
 
+WeightedLengthTables build_weighted_length_tables(const DiscreteTf& tf, int lengths, double max_length) {
+  check_length_tables(lengths, max_length, tf.size(), 2);
+  std::vector<WeightedTables> slices = build_length_slices<WeightedTables>(
+      lengths, max_length, [&](double l) { return build_weighted_tables(tf, l); },
+      [&] { return WeightedTables{PreintegrationTable(tf.axis(), 0), PreintegrationTable(tf.axis(), 0)}; });
+  std::vector<PreintegrationTable> front, back;
+  for (WeightedTables& w : slices) {
+    front.push_back(std::move(w.front));
+    back.push_back(std::move(w.back));
+  }
+  return {LengthTable(std::move(front), max_length), LengthTable(std::move(back), max_length)};
+}
+
 SlabWeights exact_weighted_slab(const DiscreteTf& tf, double s_f, double s_b, double length) {
   return pack(weighted_slab(tf, tf.axis().index(s_f), tf.axis().index(s_b), length,
                             [](const TfSample& p, const TfSample& q, double d) { return linear_piece(p, q, d).forward; }));

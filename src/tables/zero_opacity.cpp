@@ -12,7 +12,7 @@ ZeroOpacity::ZeroOpacity(const TransferFunction& tf) : tf_(&tf) {
     opaque_before_[i + 1] = opaque_before_[i] + (pieces[i].transparent() ? 0 : 1);
 }
 
-ZeroOpacity::ZeroOpacity(const DiscreteTf& tf) : axis_(tf.axis()) {
+ZeroOpacity::ZeroOpacity(const DiscreteTf& tf, TableOrder order) : axis_(tf.axis()), order_(order) {
   opaque_before_.assign(tf.size() + 1, 0);
   for (int i = 0; i < tf.size(); ++i) opaque_before_[i + 1] = opaque_before_[i] + (tf[i].tau != 0 ? 1 : 0);
 }
@@ -28,7 +28,16 @@ bool ZeroOpacity::over(double lo, double hi) const {
     first = static_cast<int>(axis_.index(lo));
     last = static_cast<int>(std::ceil(axis_.index(hi)));
   }
-  return opaque_before_[last + 1] == opaque_before_[first];
+  const int opaque = opaque_before_[first];
+  if (opaque_before_[last + 1] != opaque) return false;
+  if (order_ == TableOrder::First) return true;
+  // The run a..b of zero-tau scalars that holds first..last, and the parabola's
+  // reach beyond the range of its three scalars (header; El Hajjar et al. 2008, Eq. 2).
+  const auto begin = opaque_before_.begin();
+  const int a = static_cast<int>(std::lower_bound(begin, begin + first + 1, opaque) - begin);
+  const int b = static_cast<int>(std::upper_bound(begin + last + 1, opaque_before_.end(), opaque) - begin) - 2;
+  const double reach = (b - a) / 8.0 + 1e-3;
+  return (a == 0 || first >= a + reach) && (b == axis_.n - 1 || last <= b - reach);
 }
 
 }  // namespace vri

@@ -11,6 +11,7 @@
 #include "vri/integrators/tet_raycast.hpp"
 #include "vri/io/vtk_legacy.hpp"
 #include "tables/length_table_support.hpp"
+#include "vri/tables/weighted_tables.hpp"
 
 namespace vri {
 namespace {
@@ -80,12 +81,51 @@ TEST(ProjectedTetrahedra, LitMatchesLitRaycast) {
   EXPECT_GT(e.alpha, 100);
   EXPECT_LT(e.vs_raycast, 1e-5);
   EXPECT_LT(e.vs_exact, 0.05);
-  auto table = test::length_table_ptr(tf(), 8, 4, mesh.max_edge_length());
+}
+
+// Mode interpolated (Lum, Wilson & Ma 2004): pt reads the weighted tables
+// for the same chords as tet-raycast, lit with the terms at both ends, so the
+// two agree to rounding; the same bytes with any thread count or tile size.
+// pt-cylindrical, and pt without weighted tables, refuse the mode.
+TEST(ProjectedTetrahedra, InterpolatedLightingMatchesRaycast) {
+  const TetMesh mesh = tetrahedralize(test::volume_from({6, 6, 6}, wave), 5);
+  const Lighting light{true, 0.3, 0.7, 0.4, 32, "interpolated"};
   CameraSpec cs = view({13, -8, 10}, {2.5, 2.5, 2.5}, false);
-  cs.width = cs.height = 8;
-  Lighting interpolated = light;
-  interpolated.mode = "interpolated";
-  EXPECT_THROW(render_projected(Camera(cs), mesh, *table, {}, interpolated), Error);
+  cs.width = cs.height = 32;
+  const Camera cam(cs);
+  const DiscreteTf d(tf(), 64);
+  auto weighted = std::make_unique<WeightedLengthTables>(build_weighted_length_tables(d, 16, mesh.max_edge_length()));
+  auto table = test::length_table_ptr(tf(), 64, 16, mesh.max_edge_length());
+  const Image pt = render_projected(cam, mesh, *table, {.threads = 1}, light, weighted.get());
+  for (RenderOptions opt : {RenderOptions{2, 16}, RenderOptions{3, 5}}) {
+    const Image other = render_projected(cam, mesh, *table, opt, light, weighted.get());
+    ASSERT_EQ(0, std::memcmp(pt.data().data(), other.data().data(), pt.data().size() * sizeof(float)));
+  }
+  EXPECT_THROW(render_projected(cam, mesh, *table, {}, light), Error);
+  // pt-cylindrical reads the weighted tables resampled on its planes: close to
+  // pt (as unlit, CylindricalPlanesApproachPt); without them it refuses the mode.
+  const CylindricalTable cylinder(*table, tf(), 64, 64);
+  EXPECT_THROW(render_projected(cam, mesh, cylinder, {}, light), Error);
+  const WeightedCylindricalTables wc{CylindricalTable(weighted->front, tf(), 64, 64),
+                                     CylindricalTable(weighted->back, tf(), 64, 64)};
+  const Image cyl = render_projected(cam, mesh, cylinder, {.threads = 1}, light, &wc);
+  const Image cyl2 = render_projected(cam, mesh, cylinder, {.threads = 2, .tile_size = 7}, light, &wc);
+  ASSERT_EQ(0, std::memcmp(cyl.data().data(), cyl2.data().data(), cyl.data().size() * sizeof(float)));
+  const Image sampled = render_projected(cam, mesh, *table, {}, {true, 0.3, 0.7, 0.4, 32, "sampled"});
+  const TetRaycastIntegrator raycast(mesh, std::move(table), light, std::move(weighted));
+  double vs_raycast = 0, vs_sampled = 0, vs_cylinder = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) {
+      const Rgba a = raycast.integrate(cam.ray(x, y));
+      for (int c = 0; c < 4; ++c) {
+        vs_raycast = std::max(vs_raycast, std::abs(pt.pixel(x, y)[c] - a[c]));
+        vs_sampled = std::max(vs_sampled, double(std::abs(pt.pixel(x, y)[c] - sampled.pixel(x, y)[c])));
+        vs_cylinder = std::max(vs_cylinder, double(std::abs(pt.pixel(x, y)[c] - cyl.pixel(x, y)[c])));
+      }
+    }
+  EXPECT_LT(vs_raycast, 1e-5);
+  EXPECT_GT(vs_sampled, 1e-3);  // the mode changes the image
+  EXPECT_LT(vs_cylinder, 0.01);  // measured 3.7e-3; the mode itself changes pixels by 8.4e-2
 }
 
 TEST(ProjectedTetrahedra, MatchesRaycastOnANonConvexMesh) {

@@ -61,9 +61,10 @@ TEST(MeshScene, RefusesMismatchedMethodsAndKeys) {
   Lighting lit;
   lit.enabled = true;
   lit.mode = "interpolated";
-  const Scene raycast = scene(R"({"file": "../data/tetra_mesh_small_ascii.vtk"})", "tet-raycast");
-  expect_refused([&] { make_integrator(raycast.method, raycast.mesh(), raycast.transfer_function, lit); },
-                 "tet-raycast: lighting mode 'interpolated' is not supported on tetrahedral meshes; use 'sampled'");
+  Scene raycast = scene(R"({"file": "../data/tetra_mesh_small_ascii.vtk"})", "tet-raycast");
+  raycast.method.table_size = 16;
+  // Mode interpolated is taken by tet-raycast (pt-cylindrical refuses it: test_projected).
+  EXPECT_EQ(make_integrator(raycast.method, raycast.mesh(), raycast.transfer_function, lit)->name(), "tet-raycast");
   expect_refused([] { scene(R"({"builtin": "tetrahedralized", "tets_per_cell": 4, "grid": {"builtin": "sphere"}})"); },
                  "5 or 6");
 }

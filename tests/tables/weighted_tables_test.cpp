@@ -12,6 +12,7 @@
 #include "vri/core/error.hpp"
 #include "vri/tables/brute_builder.hpp"
 #include "vri/tables/incremental_builder.hpp"
+#include "vri/tables/table_builder.hpp"
 
 namespace vri {
 namespace {
@@ -92,6 +93,53 @@ TEST(WeightedTables, SameBytesForAnyThreadCount) {
 TEST(WeightedTables, BadLengthIsAnError) {
   const DiscreteTf tf(test::random_spiky_tf(1, 1.0), 8);
   EXPECT_THROW(build_weighted_tables(tf, 0.0), Error);
+}
+
+// The mesh methods' weighted (l, s_f, s_b) tables: every slice is the
+// weighted table of its length, and front + back is the unweighted
+// LengthTable at the nodes and between them (both linear in l).
+TEST(WeightedLengthTables, FrontPlusBackIsTheUnweightedLengthTable) {
+  const DiscreteTf tf(test::random_spiky_tf(2, 4.0), 48);
+  const WeightedLengthTables w = build_weighted_length_tables(tf, 5, 2.0);
+  const LengthTable c1 = build_length_table(IncrementalBuilder(), tf, 5, 2.0);
+  ASSERT_EQ(w.front.slices().size(), 5u);
+  EXPECT_TRUE(std::ranges::all_of(w.front.slices()[0].data(), [](float v) { return v == 0; }));
+  for (int m = 1; m < 5; ++m) {
+    const WeightedTables slice = build_weighted_tables(tf, 2.0 * m / 4);
+    EXPECT_TRUE(std::ranges::equal(w.front.slices()[m].data(), slice.front.data())) << m;
+    EXPECT_TRUE(std::ranges::equal(w.back.slices()[m].data(), slice.back.data())) << m;
+  }
+  double worst = 0, largest = 0;
+  for (double l : {0.0, 0.3, 0.5, 1.26, 2.0})
+    for (double f = 0; f <= 255; f += 7.3)
+      for (double b = 0; b <= 255; b += 5.9) {
+        const Rgba u = c1.lookup(l, f, b), front = w.front.lookup(l, f, b), back = w.back.lookup(l, f, b);
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(front[c] + back[c] - u[c]));
+        worst = std::max(worst, std::abs(front[3] - u[3]));
+        largest = std::max(largest, back[3]);
+      }
+  EXPECT_LE(worst, 1e-5);
+  EXPECT_GT(largest, 0.1);  // the weighted tables are not trivially zero
+}
+
+TEST(WeightedLengthTables, SameBytesForAnyThreadCount) {
+  const DiscreteTf tf(test::random_spiky_tf(5, 3.0), 64);
+  const auto build = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return build_weighted_length_tables(tf, 6, 1.5);
+  };
+  const WeightedLengthTables one = build(1), two = build(2);
+  EXPECT_EQ(one.front.data(), two.front.data());
+  EXPECT_EQ(one.back.data(), two.back.data());
+}
+
+TEST(WeightedLengthTables, RefusesBadSizes) {
+  const DiscreteTf tf(test::random_spiky_tf(1, 1.0), 8);
+  EXPECT_THROW(build_weighted_length_tables(tf, 1, 1.0), Error);
+  EXPECT_THROW(build_weighted_length_tables(tf, 4, 0.0), Error);
+  // Two tables of 2^26 entries each would fit the limit alone, not together.
+  const DiscreteTf big(test::random_spiky_tf(1, 1.0), 1024);
+  EXPECT_THROW(build_weighted_length_tables(big, 64, 1.0), Error);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "test_support.hpp"
+#include "vri/tables/second_order_table.hpp"
 #include "vri/tables/zero_opacity.hpp"
 #include "vri/volume/empty_space.hpp"
 
@@ -54,6 +55,53 @@ TEST(ZeroOpacity, FollowsTheEntriesABilinearLookupReads) {
   EXPECT_FALSE(zero.over(-5, 15));  // the lookup at 15 reads the entry at 20
   EXPECT_TRUE(zero.over(30, 100));
   EXPECT_FALSE(zero.over(25, 35));
+}
+
+// Table scalars x_i = i, i = 0 .. 100; tau = 0 exactly for i = 10 .. 90.
+DiscreteTf gap() {
+  return DiscreteTf(TransferFunction({{0, 1, 1, 1, 1}, {9, 1, 1, 1, 1}, {10, 1, 1, 1, 0}, {90, 1, 1, 1, 0},
+                                      {91, 1, 1, 1, 1}, {100, 1, 1, 1, 1}}),
+                    101);
+}
+
+// A second-order entry's parabola leaves the range of its three scalars by
+// up to 1/8 of it: scalars in 10..90 are not enough, only those at least
+// 80/8 = 10 inside the run are (21..79 here), and there every entry is 0.
+TEST(ZeroOpacity, SecondOrderEntriesStayInsideTheRunTheyAreClassifiedIn) {
+  const DiscreteTf tf = gap();
+  const ZeroOpacity first(tf), second(tf, TableOrder::Second);
+  EXPECT_TRUE(first.over(10, 90));
+  EXPECT_FALSE(second.over(10, 90));
+  EXPECT_TRUE(second.over(21, 79));
+  EXPECT_FALSE(second.over(20, 79));
+  EXPECT_FALSE(second.over(21, 80));
+  EXPECT_FALSE(second.over(20.5, 79));  // reads the entry at 20
+  // the parabola through 20, 90, 90 peaks at 90 + 70/8 = 98.75, where tau = 1
+  EXPECT_GT(second_order_entry(tf, 20, 90, 90, 1.0, 64).a, 0);
+  for (int f = 21; f <= 79; f += 2)
+    for (int m = 21; m <= 79; ++m)
+      for (int b = 21; b <= 79; b += 3) {
+        const SlabRgba e = second_order_entry(tf, f, m, b, 1.0, 32);
+        ASSERT_TRUE(e.r == 0 && e.g == 0 && e.b == 0 && e.a == 0) << f << " " << m << " " << b;
+      }
+  for (const auto& builder : {"plain", "fast"}) {
+    const SecondOrderTable table = make_second_order_builder(builder)->build(tf, 1.0, 32);
+    for (int f = 21; f <= 79; ++f)
+      for (int m = 21; m <= 79; ++m)
+        for (int b = 21; b <= 79; ++b)
+          for (int c = 0; c < 4; ++c) ASSERT_EQ(table.entry(f, m, b)[c], 0.0f) << builder << f << " " << m << " " << b;
+  }
+}
+
+// At an end of the axis the parabola is clamped, so only the other end of the
+// run needs the margin: tau = 0 on 0..50 of 0..100 allows scalars 0..43.
+TEST(ZeroOpacity, SecondOrderNeedsNoMarginAtTheEndsOfTheAxis) {
+  const DiscreteTf tf(TransferFunction({{0, 1, 1, 1, 0}, {50, 1, 1, 1, 0}, {51, 1, 1, 1, 1}, {100, 1, 1, 1, 1}}), 101);
+  const ZeroOpacity second(tf, TableOrder::Second);
+  EXPECT_TRUE(second.over(-5, 43));
+  EXPECT_FALSE(second.over(-5, 44));
+  for (int f = 0; f <= 43; ++f)
+    for (int b = 0; b <= 43; ++b) EXPECT_EQ(second_order_entry(tf, f, 0, b, 1.0, 32).a, 0) << f << " " << b;
 }
 
 // One non-zero sample at (20, 20, 20), in macro cell (2, 2, 2) only: a ray

@@ -1,6 +1,6 @@
 #pragma once
-// FastPath: the speed-ups of the ray casters (riemann, preint1) that change no
-// pixel, or change it by a stated bound (issue 8; docs/PERFORMANCE.md).
+// FastPath: the speed-ups of the ray casters (riemann, preint1, preint2) that
+// change no pixel, or change it by a stated bound (issue 8; docs/PERFORMANCE.md).
 // - skip_empty: rays leap over macro cells whose values the transfer function
 //   maps to zero opacity (volume/empty_space.hpp); they stay on the same
 //   sample positions, so the image is the same bytes as without skipping.

@@ -23,7 +23,7 @@ struct MethodSpec {
   // preint*: pre-integration table builder. preint2* use it when it names a
   // second-order builder (plain, fast), else the fast one.
   std::string builder = "incremental";
-  // riemann, preint1: empty-space skipping (`skip_empty`, default on: it changes
+  // riemann, preint1, preint2: empty-space skipping (`skip_empty`, default on: it changes
   // no pixel) and early ray termination (`termination`, a transmittance
   // threshold; default 0, off). fast_path.hpp.
   FastPath fast{};

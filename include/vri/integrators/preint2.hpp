@@ -24,9 +24,16 @@
 // shading quadratically through the three samples with the weighted tables
 // of second_order_weighted.hpp (three tables: 3x the memory, 768 MiB at 256
 // entries a side). The partial last slab is lit as preint1 lights its own.
+//
+// Fast path (fast_path.hpp): the slabs whose three samples lie in a run of
+// macro cells classified empty for second-order entries (ZeroOpacity with
+// TableOrder::Second: the parabola's overshoot stays in zero opacity) are
+// leapt over on the same samples, so the image keeps its bytes; early
+// termination as in preint1.
 #include <optional>
 #include <string>
 
+#include "vri/integrators/fast_path.hpp"
 #include "vri/integrators/integrator.hpp"
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/shading/lighting.hpp"
@@ -49,7 +56,8 @@ class Preint2Integrator final : public Integrator {
   // times (1 .. kMaxSecondOrderIterations), built by the named second-order
   // builder. Throws vri::Error for a lighting mode other than sampled or interpolated.
   Preint2Integrator(const GridVolume& volume, const TransferFunction& tf, double step, int table_size,
-                    int iterations, const std::string& builder, const Lighting& lighting = {});
+                    int iterations, const std::string& builder, const Lighting& lighting = {},
+                    const FastPath& fast = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "preint2"; }
 
@@ -63,6 +71,7 @@ class Preint2Integrator final : public Integrator {
   std::optional<SecondOrderTable> table_;              // unless interpolated
   std::optional<SecondOrderWeightedTables> weighted_;  // when lit and interpolated
   std::optional<HeadlightShader> shader_;              // when lit
+  detail::Skipping fast_;
 };
 
 }  // namespace vri

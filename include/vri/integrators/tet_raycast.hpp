@@ -4,7 +4,9 @@
 // (l, s_f, s_b) table instead of integrated (Roettger & Ertl 2002, Sec. 3:
 // the segment inside a tetrahedron is fully described by s_f, s_b and l), and
 // composited front to back: C += T C_seg, T *= 1 - alpha_seg.
-// Lit: each piece's colour is lit with one normal (ChordLighting, mode `sampled`).
+// Lit: each piece is lit by ChordLighting, with one normal (mode `sampled`) or
+// with the shading at its entry and exit weighting the weighted tables (mode
+// `interpolated`, Lum, Wilson & Ma 2004).
 #include <memory>
 #include <optional>
 
@@ -12,19 +14,23 @@
 #include "vri/mesh/tet_walk.hpp"
 #include "vri/shading/chord_lighting.hpp"
 #include "vri/tables/slab_table.hpp"
+#include "vri/tables/weighted_tables.hpp"
 
 namespace vri {
 
 class TetRaycastIntegrator final : public Integrator {
  public:
-  // The table must cover segments up to mesh.max_edge_length() (vri::Error otherwise).
-  TetRaycastIntegrator(const TetMesh& mesh, std::unique_ptr<const SlabTable> table, const Lighting& lighting = {});
+  // The tables must cover segments up to mesh.max_edge_length() (vri::Error
+  // otherwise); `weighted` is needed for lighting mode interpolated only.
+  TetRaycastIntegrator(const TetMesh& mesh, std::unique_ptr<const SlabTable> table, const Lighting& lighting = {},
+                       std::unique_ptr<const WeightedLengthTables> weighted = nullptr);
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "tet-raycast"; }
 
  private:
   TetWalk walk_;
   std::unique_ptr<const SlabTable> table_;
+  std::unique_ptr<const WeightedLengthTables> weighted_;
   std::optional<ChordLighting> lighting_;
 };
 

@@ -21,8 +21,9 @@
 // canonical vertex order, so each pixel centre is covered once per tetrahedron
 // layer. Tetrahedra with a vertex behind the eye (or the orthographic eye
 // plane) are not drawn: keep the eye outside the mesh.
-// Lit (SPEC §5, mode `sampled` only): each fragment's colour is lit with one
-// normal for its chord from front to back point (ChordLighting).
+// Lit (SPEC §5): each fragment's chord from front to back point is lit by
+// ChordLighting: one normal (mode `sampled`), or the shading at both ends
+// weighting the weighted tables (mode `interpolated`).
 #include "vri/camera/camera.hpp"
 #include "vri/mesh/tet_mesh.hpp"
 #include "vri/render/image.hpp"
@@ -30,15 +31,20 @@
 #include "vri/shading/lighting.hpp"
 #include "vri/tables/cylindrical_table.hpp"
 #include "vri/tables/slab_table.hpp"
+#include "vri/tables/weighted_tables.hpp"
 
 namespace vri {
 
-// The table must cover mesh.max_edge_length() (vri::Error otherwise).
+// The tables must cover mesh.max_edge_length() (vri::Error otherwise);
+// `weighted` is needed for lighting mode interpolated only.
 Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTable& table,
-                       const RenderOptions& options = {}, const Lighting& lighting = {});
+                       const RenderOptions& options = {}, const Lighting& lighting = {},
+                       const WeightedLengthTables* weighted = nullptr);
 // pt-cylindrical: the same, each tetrahedron read from the two cylinder planes
-// next to its thick vertex's plane (2D lookups, Roettger & Ertl 2002, Sec. 4).
+// next to its thick vertex's plane (2D lookups, Roettger & Ertl 2002, Sec. 4);
+// in mode interpolated the weighted tables on the same planes.
 Image render_projected(const Camera& camera, const TetMesh& mesh, const CylindricalTable& table,
-                       const RenderOptions& options = {}, const Lighting& lighting = {});
+                       const RenderOptions& options = {}, const Lighting& lighting = {},
+                       const WeightedCylindricalTables* weighted = nullptr);
 
 }  // namespace vri

@@ -43,4 +43,11 @@ class CylindricalTable {
   std::vector<float> tiles_;  // [plane][s][t][rgba]
 };
 
+// pt-cylindrical's interpolated lighting: the weighted (l, s_f, s_b) tables
+// (weighted_tables.hpp, packed front/back) resampled on the same planes. The
+// resampling is linear, so front + back is still the resampled plain table.
+struct WeightedCylindricalTables {
+  CylindricalTable front, back;
+};
+
 }  // namespace vri

@@ -3,7 +3,10 @@
 // computes the same entries (slab_integral.hpp), exactly or approximately;
 // `brute` is the reference the others are tested against. Builders run on
 // oneTBB and give the same bytes for any thread count.
+#include <tbb/parallel_for.h>
+
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +33,24 @@ void check_slab_length(double length);
 inline constexpr std::size_t kMaxLengthTableEntries = std::size_t{1} << 26;  // 1 GiB of RGBA floats
 LengthTable build_length_table(const TableBuilder& builder, const DiscreteTf& tf, int lengths,
                                double max_length);
+
+// build_length_table's refusals for `tables` tables of M x N x N entries together.
+void check_length_tables(int lengths, double max_length, int n, int tables);
+
+// The M slices of a length table, slices[m] = build(max_length * m / (M - 1))
+// for m >= 1 and empty(0) for the empty slab (builders take only positive
+// lengths), built concurrently; each slice's bytes depend on its length only.
+template <class Slice, class Build, class Empty>
+std::vector<Slice> build_length_slices(int lengths, double max_length, Build build, Empty empty) {
+  std::vector<std::optional<Slice>> built(lengths);
+  tbb::parallel_for(0, lengths, [&](int m) {
+    if (m == 0) built[m].emplace(empty());
+    else built[m].emplace(build(max_length * m / (lengths - 1)));
+  });
+  std::vector<Slice> slices;
+  for (auto& t : built) slices.push_back(std::move(*t));
+  return slices;
+}
 
 // "brute", "incremental", "sliced" (its defaults), "engel"; throws vri::Error naming the known ones otherwise.
 std::unique_ptr<TableBuilder> make_table_builder(const std::string& name);

@@ -77,6 +77,19 @@ SlabWeights weighted_slab(const DiscreteTf& tf, double u_f, double u_b, double l
 // a table lookup at (s_f, s_b) approximates, for the partial last slab.
 SlabWeights exact_weighted_slab(const DiscreteTf& tf, double s_f, double s_b, double length);
 
+// The weighted (l, s_f, s_b) tables of the mesh methods' interpolated
+// lighting (chord_lighting.hpp): slice m of each is the packed table above
+// for length max_length * m / (M - 1) (build_weighted_tables per slice, the
+// slices built concurrently; slice 0, the empty slab, is 0), lookups linear in
+// l like any LengthTable. front + back = the unweighted LengthTable.
+// Memory: 2 M N^2 x 16 bytes, 32 MiB at N = 128, M = 64 (twice the unweighted table).
+struct WeightedLengthTables {
+  LengthTable front, back;
+};
+
+// Throws vri::Error as build_length_table, both tables counted against kMaxLengthTableEntries.
+WeightedLengthTables build_weighted_length_tables(const DiscreteTf& tf, int lengths, double max_length);
+
 // The packing of §5.1 from unpacked weights.
 inline SlabWeights pack(const SlabWeights& w) {
   return {{w.front.r, w.front.g, w.front.b, w.front.a + w.back.a}, w.back};

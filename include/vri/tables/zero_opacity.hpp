@@ -8,7 +8,20 @@
 // - from a DiscreteTf (pre-integrated methods): every table scalar x_i that a
 //   bilinear lookup at s in [lo, hi] gives a weight, i from floor(index(lo))
 //   to ceil(index(hi)), has tau = 0; a table entry (f, b) integrates the
-//   discretised function between x_f and x_b, so it is zero.
+//   discretised function between x_f and x_b, so it is zero;
+// - from a DiscreteTf for second-order tables (preint2, TableOrder::Second):
+//   an entry (f, m, b) integrates along the parabola through the table
+//   scalars x_f, x_m, x_b (second_order_table.hpp), which leaves their range
+//   by up to 1/8 of its width (the Lagrange basis on [0, 1] dips to -1/8 at
+//   t = 1/4 and 3/4) before it is clamped to the axis. So the entries
+//   i = floor(index(lo)) .. ceil(index(hi)) must lie in a run a..b of
+//   zero-tau table scalars at least (b - a)/8 (+ 1e-3 for rounding) away from
+//   each end of the run that is not an end of the axis: then any three of
+//   them span at most b - a, their parabola stays inside a..b, and every
+//   sub-step of the entry reads tau = 0 and colour times alpha = 0. The
+//   condition holds for the union of overlapping ranges that each meet it
+//   (they lie in the same run), so a slab whose three samples lie in a run of
+//   such macro cells reads zero entries (volume/empty_space.hpp).
 // Each query is O(1) after a binary search, so reclassifying every macro cell
 // after a transfer-function edit takes milliseconds (bench_macro_cells).
 #include <vector>
@@ -18,10 +31,14 @@
 
 namespace vri {
 
+// The table a DiscreteTf feeds: first order (slabs with the scalar linear)
+// or second order (slabs with the scalar a parabola).
+enum class TableOrder { First, Second };
+
 class ZeroOpacity {
  public:
   explicit ZeroOpacity(const TransferFunction& tf);
-  explicit ZeroOpacity(const DiscreteTf& tf);
+  explicit ZeroOpacity(const DiscreteTf& tf, TableOrder order = TableOrder::First);
 
   // True when no scalar in [lo, hi] (lo <= hi) contributes.
   bool over(double lo, double hi) const;
@@ -29,6 +46,7 @@ class ZeroOpacity {
  private:
   const TransferFunction* tf_ = nullptr;  // riemann: pieces of tf_; else table scalars of axis_
   ScalarAxis axis_;
+  TableOrder order_ = TableOrder::First;
   std::vector<int> opaque_before_;  // opaque_before_[i]: pieces (or table scalars) 0..i-1 with tau != 0
 };
 

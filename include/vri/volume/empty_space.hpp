@@ -13,7 +13,11 @@
 // - preint1: along a run of empty cells each neighbour shares a face (and the
 //   samples on it) with the next, so their ranges overlap and their union is
 //   one interval with zero opacity; a slab between two samples in the run reads
-//   table entries inside it, which are zero.
+//   table entries inside it, which are zero;
+// - preint2: the same with slabs of three samples, when the cells were
+//   classified with TableOrder::Second (zero_opacity.hpp): the union of the
+//   run's ranges then lies far enough inside one run of zero table scalars
+//   that the parabola through any three of its scalars stays in that run.
 // Classifying is O(macro cells) and takes milliseconds (bench_macro_cells).
 #include <cstdint>
 #include <vector>
