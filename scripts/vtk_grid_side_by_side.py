@@ -11,7 +11,9 @@ It runs ./build/vri with 2 threads: `exact` (the reference, kept in OUT as
 <scene>_exact.npy and reused when present), `preint1` and `riemann` at step 1
 with empty-space skipping (the default), with skipping and early termination
 below transmittance 0.002 (under one 8-bit step), and with neither (--no-skip,
-the plain path), then VTK's FixedPoint mapper with 2 threads at sample distance 1 voxel.
+the plain path; for preint1 also --double: its double-precision path, with
+skipping and as the plain path), then VTK's FixedPoint mapper with 2 threads at
+sample distance 1 voxel.
 Each vri time is the fastest of --repeat renders as vri reports it (the render
 only: not loading the volume, building the macro cells or the table); each VTK
 time is the mean of --repeat frames after a first, untimed one.
@@ -146,8 +148,12 @@ def vtk_render(frames=args.repeat):
 
 rows = []
 for method in ["preint1", "riemann"]:
-    for extra, label in [((), "skipping"), (("--termination", "0.002"), "skipping + termination 0.002"),
-                         (("--no-skip",), "plain")]:
+    variants = [((), "skipping"), (("--termination", "0.002"), "skipping + termination 0.002")]
+    if method == "preint1":  # its float path is the default; --double is its double-precision reference
+        variants += [(("--double",), "skipping, double"), (("--no-skip", "--double"), "plain")]
+    else:
+        variants += [(("--no-skip",), "plain")]
+    for extra, label in variants:
         img, t = vri_render(method, extra)
         rows.append((f"vri {method} step 1, {label}", img, t, True))
 img, t = vtk_render()

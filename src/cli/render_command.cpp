@@ -1,7 +1,7 @@
 // vri render SCENE.json -o OUT.(npy|png) [--method NAME] [--step H]
 //   [--tolerance E] [--table-size N] [--width W --height H] [--threads K]
 //   [--h0 H --hmin H --hmax H --strategy S] [--error-estimate ERR.npy]
-//   [--trace-pixel PX PY --trace STEPS.csv] [--termination T] [--no-skip]
+//   [--trace-pixel PX PY --trace STEPS.csv] [--termination T] [--no-skip] [--double]
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -34,7 +34,7 @@ struct RenderArgs {
   std::string scene, output;
   std::optional<std::string> method;
   std::optional<double> step, tolerance, termination;
-  bool no_skip = false;
+  bool no_skip = false, double_math = false;
   std::optional<int> table_size, iterations, width, height;
   int threads = 0;
   std::optional<double> h0, hmin, hmax;
@@ -86,6 +86,7 @@ int run_render(const RenderArgs& args) {
   if (args.strategy) scene.method.strategy = *args.strategy;
   if (args.termination) scene.method.fast.termination = *args.termination;
   if (args.no_skip) scene.method.fast.skip_empty = false;
+  if (args.double_math) scene.method.fast.float_math = false;
   if (args.error_estimate && std::filesystem::path(*args.error_estimate).extension() != ".npy")
     throw Error("--error-estimate '" + *args.error_estimate + "' must end in .npy");
   if (args.trace.has_value() != !args.trace_pixel.empty()) throw Error("--trace and --trace-pixel go together");
@@ -176,6 +177,7 @@ Runner add_render_command(CLI::App& app) {
                   "riemann, preint1, preint2: stop a ray once its transmittance is below this (0: off)");
   cmd->add_flag("--no-skip", args->no_skip,
                 "riemann, preint1, preint2: march through empty space too (the plain path)");
+  cmd->add_flag("--double", args->double_math, "preint1: sample, look up and composite in double (the reference of its float path)");
   cmd->add_option("--width", args->width, "Image width in pixels");
   cmd->add_option("--height", args->height, "Image height in pixels");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)");

@@ -1,5 +1,6 @@
 #include "vri/integrators/preint1.hpp"
 
+#include "float_march.hpp"
 #include "slab_policies.hpp"
 #include "vri/core/error.hpp"
 #include "vri/tables/slab_integral.hpp"
@@ -14,7 +15,10 @@ Preint1Integrator::Preint1Integrator(const GridVolume& volume, const TransferFun
       h_(detail::world_step(volume, step, "preint1")),
       tf_(tf, table_size),
       table_(make_table_builder(builder)->build(tf_, h_)),
-      fast_(volume, ZeroOpacity(tf_), fast, "preint1") {
+      fast_(volume, ZeroOpacity(tf_), fast, "preint1"),
+      float_math_(fast.float_math),
+      float_sampler_(volume),
+      float_table_(table_) {
   if (!lighting.enabled) return;
   if (lighting.mode != "sampled" && lighting.mode != "interpolated")
     throw Error("preint1: lighting mode must be sampled or interpolated, got '" + lighting.mode + "'");
@@ -27,12 +31,19 @@ Rgba Preint1Integrator::integrate(const Ray& ray) const {
   using Table = PreintegrationTable;
   const detail::Leap leap{fast_.space(), fast_.termination()};
   const detail::NoPrefetch none;
+  if (weighted_ && float_math_)
+    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Interpolated1{{tf_, *shader_, ray.dir}, *weighted_}, none,
+                                  leap, detail::FloatScalar{float_sampler_});
   if (weighted_)
     return march_uniform_slabs<2>(volume_, ray, h_, slabs::Interpolated1{{tf_, *shader_, ray.dir}, *weighted_}, none,
                                   leap);
+  if (shader_ && float_math_)
+    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Sampled<2, FloatLookup>{float_table_, tf_, *shader_, ray.dir},
+                                  none, leap, detail::FloatScalar{float_sampler_});
   if (shader_)
     return march_uniform_slabs<2>(volume_, ray, h_, slabs::Sampled<2, Table>{table_, tf_, *shader_, ray.dir}, none,
                                   leap);
+  if (float_math_) return detail::march_preint1_float(volume_, float_sampler_, float_table_, tf_, ray, h_, leap);
   return march_uniform_slabs<2>(volume_, ray, h_, slabs::Unlit<2, Table>{table_, tf_}, none, leap);
 }
 

@@ -25,6 +25,7 @@
 #include "vri/core/ray.hpp"
 #include "vri/core/rgba.hpp"
 #include "vri/volume/empty_space.hpp"
+#include "vri/volume/float_sampler.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri::detail {
@@ -75,9 +76,35 @@ struct Leap {
   double termination = 0;             // 0: never stop early
 };
 
-template <int Samples, class Policy, class Prefetch = NoPrefetch>
+// From slab k of `steps` steps of h (its front sample at t = t0 + k steps h,
+// k < full): the slab the march may leap to, j > k when the ray stands in a
+// run of empty macro cells (samples k steps .. i lie in the run, and slabs
+// k .. j - 1, whose samples are among them, read zero entries), else k.
+// Queries only once t passes t_check, the end of the last run found, which it
+// then updates.
+inline long long leap_target(const Leap& leap, const Ray& ray, const Interval& iv, double h, int steps, long long k,
+                             long long full, double& t_check) {
+  const double t = iv.t0 + k * steps * h;
+  if (!leap.space || t < t_check) return k;
+  const EmptySpace::Run run = leap.space->run(ray, t, iv.t1);
+  t_check = run.t_end;
+  const long long i = static_cast<long long>(std::floor((run.t_end - iv.t0) / h));
+  return run.empty ? std::min(full, i / steps) : k;
+}
+
+// The scalar at a sample: GridVolume::sample, or FloatSampler's (preint1's
+// float path, float_march.hpp).
+struct GridScalar {
+  double operator()(const GridVolume& volume, Vec3 p) const { return volume.sample(p); }
+};
+struct FloatScalar {
+  const FloatSampler& sampler;
+  double operator()(const GridVolume&, Vec3 p) const { return sampler.at(sampler.grid(p)); }
+};
+
+template <int Samples, class Policy, class Prefetch = NoPrefetch, class Scalar = GridScalar>
 Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, const Policy& policy,
-                         Prefetch&& prefetch = {}, const Leap& leap = {}) {
+                         Prefetch&& prefetch = {}, const Leap& leap = {}, const Scalar& scalar = {}) {
   static_assert(Samples >= 2);
   constexpr int steps = Samples - 1;
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
@@ -88,7 +115,7 @@ Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, con
   using Slab = std::array<Sample, Samples>;
   const auto sample_at = [&](double t) {
     const Vec3 p = ray.at(t);
-    return Sample{volume.sample(p), policy.at(p)};
+    return Sample{scalar(volume, p), policy.at(p)};
   };
   const auto fill = [&](Slab& s, long long k) {
     for (int i = 1; i < Samples; ++i) s[i] = sample_at(iv->t0 + (k * steps + i) * h);
@@ -100,20 +127,11 @@ Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, con
   double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
   for (long long k = 0; k < full; ++k) {
     if (acc.T < leap.termination) return acc.result();
-    const double t = iv->t0 + k * steps * h;
-    if (leap.space && t >= t_check) {
-      const EmptySpace::Run run = leap.space->run(ray, t, iv->t1);
-      t_check = run.t_end;
-      // In an empty run samples k steps .. i lie in the run, and slabs k .. j - 1,
-      // whose samples are among them, read zero entries.
-      const long long i = static_cast<long long>(std::floor((run.t_end - iv->t0) / h));
-      const long long j = run.empty ? std::min(full, i / steps) : k;
-      if (j > k) {
-        k = j;
-        s[0] = sample_at(iv->t0 + k * steps * h);
-        if (k == full) break;
-        fill(s, k);
-      }
+    if (const long long j = leap_target(leap, ray, *iv, h, steps, k, full, t_check); j > k) {
+      k = j;
+      s[0] = sample_at(iv->t0 + k * steps * h);
+      if (k == full) break;
+      fill(s, k);
     }
     next[0] = s[steps];
     if (k + 1 < full) {

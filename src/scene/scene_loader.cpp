@@ -270,6 +270,7 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     method.builder = m.string(mj, "builder", method.builder);
     method.fast.termination = m.number(mj, "termination", method.fast.termination);
     method.fast.skip_empty = m.boolean(mj, "skip_empty", method.fast.skip_empty);
+    method.fast.float_math = m.boolean(mj, "float_math", method.fast.float_math);
   }
 
   Lighting lighting;

@@ -15,7 +15,9 @@
 //
 // FastPath (fast_path.hpp): the ray leaps over runs of empty macro cells from
 // sample to sample (whole steps, so on the same samples): every slab inside a
-// run reads zero table entries. It may stop once T < termination.
+// run reads zero table entries. It may stop once T < termination. Unless
+// fast.float_math is off it works in float: unlit, the whole march
+// (float_march.hpp); lit, the scalar samples and (sampled) the table lookups.
 #include <optional>
 #include <string>
 
@@ -24,8 +26,10 @@
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/shading/lighting.hpp"
 #include "vri/tables/discrete_tf.hpp"
+#include "vri/tables/float_lookup.hpp"
 #include "vri/tables/preintegration_table.hpp"
 #include "vri/tables/weighted_tables.hpp"
+#include "vri/volume/float_sampler.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri {
@@ -50,6 +54,9 @@ class Preint1Integrator final : public Integrator {
   std::optional<HeadlightShader> shader_;     // when lit
   std::optional<WeightedTables> weighted_;    // when lit and interpolated
   detail::Skipping fast_;
+  bool float_math_;
+  FloatSampler float_sampler_;
+  FloatLookup float_table_;
 };
 
 }  // namespace vri

@@ -4,9 +4,11 @@
 // of Amanatides & Woo 1987 over macro cells).
 //
 // A macro cell is empty when its range [min - d, max + d] contributes nothing
-// (ZeroOpacity::over), d = 1e-6 (max - min of the volume): the margin covers
-// the rounding of a sample position that lies on a face between an empty and
-// a non-empty macro cell. Exactness for the integrators:
+// (ZeroOpacity::over), d = 1e-5 (max - min + max |value| of the volume): the
+// margin covers the rounding of a sample position that lies on a face between
+// an empty and a non-empty macro cell, and preint1's float interpolation and
+// table index (float_sampler.hpp, float_lookup.hpp: a few float roundings of
+// the largest |value|). Exactness for the integrators:
 // - riemann: a sample in an empty cell has tau = 0 and adds nothing;
 // - preint1: along a run of empty cells each neighbour shares a face (and the
 //   samples on it) with the next, so their ranges overlap and their union is
