@@ -6,7 +6,8 @@
 // functions are `flatten` (thin_piece_weights and every helper inlined into
 // each clone, at any optimisation level - without it an -O2 sanitizer build
 // called an out-of-line baseline thin_piece_weights from the AVX2 clone and
-// got wrong tables), and GCC's -Wpsabi note stays on as the alarm.
+// got wrong tables). GCC's -Wpsabi remarks on the always-inline helpers'
+// signatures are therefore moot and off for this file (src/CMakeLists.txt).
 
 #include "incremental_diagonals.hpp"
 
