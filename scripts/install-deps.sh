@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Installs vri's build and test dependencies from Debian packages.
+# install-deps.sh [--vtk]: installs vri's build and test dependencies from Debian packages.
 # Skips apt entirely when everything is already installed.
 set -euo pipefail
 pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1g-dev
       libtbb-dev libgtest-dev libbenchmark-dev python3 python3-numpy)
+# --vtk: also what the VTK side-by-side scripts need (scripts/vtk_*side_by_side.py).
+if [ "${1:-}" = --vtk ]; then pkgs+=(python3-vtk9 xvfb xauth); fi
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
