@@ -1,0 +1,187 @@
+#include "float_packet.hpp"
+
+#include <immintrin.h>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <limits>
+
+#include "float_march.hpp"
+
+namespace vri::detail {
+
+bool packets_fit(const FloatSampler&, const FloatLookup&, const GridVolume& volume) {
+  return __builtin_cpu_supports("avx2") && volume.values().size() <= static_cast<std::size_t>(INT_MAX);
+}
+
+namespace {
+
+// Each ray's state, a lane each: what march_preint1_float keeps in locals.
+struct Lanes {
+  alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0, grid units
+  alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
+  alignas(32) int k[kPacket], stop[kPacket], full[kPacket];
+  alignas(32) float back_s[kPacket], back_w[kPacket], next_s[kPacket], next_w[kPacket];
+  alignas(32) int back_i[kPacket], next_i[kPacket];
+  alignas(16) Float4 C[kPacket];
+  float T[kPacket], front_s[kPacket];
+  FloatLookup::Spot spot[kPacket];
+  Interval iv[kPacket];
+  double t_check[kPacket];
+};
+
+#define VRI_AVX2 __attribute__((target("avx2"), always_inline)) inline
+
+// One axis of FloatSampler::at for the 8 lanes' samples k: the cell
+// min(trunc(clamp(u0 + k du, 0, top)), last) and the float fraction in it,
+// with the same double operations as the scalar code.
+VRI_AVX2 void cell_axis(const double* u0, const double* du, __m256i k, double top, int last, __m256i& cell,
+                        __m256& fraction) {
+  const __m256d zero = _mm256_setzero_pd(), hi = _mm256_set1_pd(top);
+  __m128i c[2];
+  __m128 f[2];
+  for (int half = 0; half < 2; ++half) {
+    const __m256d kd = _mm256_cvtepi32_pd(half ? _mm256_extracti128_si256(k, 1) : _mm256_castsi256_si128(k));
+    __m256d x = _mm256_add_pd(_mm256_load_pd(u0 + 4 * half), _mm256_mul_pd(kd, _mm256_load_pd(du + 4 * half)));
+    x = _mm256_min_pd(hi, _mm256_max_pd(zero, x));  // std::clamp: x < 0 ? 0 : top < x ? top : x
+    c[half] = _mm_min_epi32(_mm256_cvttpd_epi32(x), _mm_set1_epi32(last));
+    f[half] = _mm256_cvtpd_ps(_mm256_sub_pd(x, _mm256_cvtepi32_pd(c[half])));
+  }
+  cell = _mm256_set_m128i(c[1], c[0]);
+  fraction = _mm256_set_m128(f[1], f[0]);
+}
+
+VRI_AVX2 __m256 gather(const float* base, __m256i index) { return _mm256_i32gather_ps(base, index, 4); }
+
+VRI_AVX2 __m256 lerp(__m256 a, __m256 b, __m256 f) { return _mm256_add_ps(a, _mm256_mul_ps(f, _mm256_sub_ps(b, a))); }
+
+// FloatSampler::at of the 8 lanes' samples k.
+VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const Lanes& L, __m256i k) {
+  __m256i cx, cy, cz;
+  __m256 fx, fy, fz;
+  cell_axis(L.ux, L.dx, k, sampler.top(0), sampler.last_cell(0), cx, fx);
+  cell_axis(L.uy, L.dy, k, sampler.top(1), sampler.last_cell(1), cy, fy);
+  cell_axis(L.uz, L.dz, k, sampler.top(2), sampler.last_cell(2), cz, fz);
+  const std::size_t sy = sampler.stride_y(), sz = sampler.stride_z();
+  const __m256i index =
+      _mm256_add_epi32(cx, _mm256_add_epi32(_mm256_mullo_epi32(cy, _mm256_set1_epi32(static_cast<int>(sy))),
+                                            _mm256_mullo_epi32(cz, _mm256_set1_epi32(static_cast<int>(sz)))));
+  const float* v = sampler.values();
+  const __m256 c00 = lerp(gather(v, index), gather(v + 1, index), fx);
+  const __m256 c10 = lerp(gather(v + sy, index), gather(v + sy + 1, index), fx);
+  const __m256 c01 = lerp(gather(v + sz, index), gather(v + sz + 1, index), fx);
+  const __m256 c11 = lerp(gather(v + sz + sy, index), gather(v + sz + sy + 1, index), fx);
+  return lerp(lerp(c00, c10, fy), lerp(c01, c11, fy), fz);
+}
+
+#undef VRI_AVX2
+
+}  // namespace
+
+__attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler,
+                                                          const FloatLookup& table, const DiscreteTf& tf,
+                                                          const Ray* rays, double h, const Leap& leap, Rgba* out) {
+  struct Point {
+    float s;
+    FloatLookup::Place place;
+  };
+  Lanes L{};  // lanes without a ray read cell 0
+  const auto sample = [&](int l, long long k) {
+    const float s = sampler.at(Vec3{L.ux[l], L.uy[l], L.uz[l]} + static_cast<double>(k) * Vec3{L.dx[l], L.dy[l], L.dz[l]});
+    return Point{s, table.place(s)};
+  };
+  const auto set_back = [&](int l, const Point& p) {
+    L.back_s[l] = p.s;
+    L.back_i[l] = p.place.i;
+    L.back_w[l] = p.place.w;
+  };
+  const float termination = static_cast<float>(leap.termination);
+  unsigned active = 0;
+  for (int l = 0; l < kPacket; ++l) {
+    const auto iv = clip_to_box(rays[l], volume.box_lo(), volume.box_hi());
+    if (!iv) {
+      out[l] = {0, 0, 0, 0};
+      continue;
+    }
+    L.iv[l] = *iv;
+    L.full[l] = static_cast<int>(std::floor(iv->length() / h));
+    const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
+    L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
+    const Point front = sample(l, 0), back = L.full[l] > 0 ? sample(l, 1) : front;
+    L.front_s[l] = front.s;
+    set_back(l, back);
+    L.spot[l] = table.find(front.place, back.place);
+    L.T[l] = 1;
+    L.t_check[l] = -std::numeric_limits<double>::infinity();
+    active |= 1u << l;
+  }
+  const auto finish = [&](int l) {
+    out[l] = finish_preint1_float(sampler, tf, rays[l], L.iv[l], L.full[l], h, L.front_s[l], termination, L.C[l],
+                                  L.T[l]);
+    active &= ~(1u << l);
+  };
+  // A lane at its stop: the head of march_preint1_float's outer loop (leap,
+  // next stop) or, past its last full slab, its end.
+  const auto head = [&](int l) {
+    long long k = L.k[l];
+    const long long full = L.full[l];
+    if (k >= full) return finish(l);
+    if (const long long j = leap_target(leap, rays[l], L.iv[l], h, 1, k, full, L.t_check[l]); j > k) {
+      k = L.k[l] = static_cast<int>(j);
+      const Point front = sample(l, k);
+      L.front_s[l] = front.s;
+      if (k == full) return finish(l);
+      const Point back = sample(l, k + 1);
+      set_back(l, back);
+      L.spot[l] = table.find(front.place, back.place);
+    }
+    L.stop[l] = static_cast<int>(
+        leap.space ? std::clamp(static_cast<long long>(std::ceil((L.t_check[l] - L.iv[l].t0) / h)), k + 1, full)
+                   : full);
+  };
+  const __m256 lo = _mm256_set1_ps(table.lo()), scale = _mm256_set1_ps(table.scale()), top = _mm256_set1_ps(table.top());
+  const __m256i last = _mm256_set1_epi32(table.size() - 2), two = _mm256_set1_epi32(2);
+  while (active) {
+    const __m256i before_stop = _mm256_cmpgt_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(L.stop)),
+                                                   _mm256_load_si256(reinterpret_cast<const __m256i*>(L.k)));
+    for (unsigned m = active & ~static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(before_stop))); m;
+         m &= m - 1)
+      head(__builtin_ctz(m));
+    if (!active) break;
+    // Sample k + 2 of every lane and its place on the table axis (FloatLookup::place);
+    // past a lane's last full slab its back sample stands in, as in the scalar march.
+    const __m256i k2 = _mm256_add_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(L.k)), two);
+    const __m256 s = sample8(sampler, L, k2);
+    const __m256 u = _mm256_min_ps(top, _mm256_max_ps(_mm256_setzero_ps(), _mm256_mul_ps(_mm256_sub_ps(s, lo), scale)));
+    const __m256i i = _mm256_min_epi32(_mm256_cvttps_epi32(u), last);
+    const __m256 w = _mm256_sub_ps(u, _mm256_cvtepi32_ps(i));
+    const __m256 beyond =
+        _mm256_castsi256_ps(_mm256_cmpgt_epi32(k2, _mm256_load_si256(reinterpret_cast<const __m256i*>(L.full))));
+    _mm256_store_ps(L.next_s, _mm256_blendv_ps(s, _mm256_load_ps(L.back_s), beyond));
+    _mm256_store_ps(L.next_w, _mm256_blendv_ps(w, _mm256_load_ps(L.back_w), beyond));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(L.next_i),
+                       _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(i), _mm256_castsi256_ps(
+                                                                _mm256_load_si256(reinterpret_cast<const __m256i*>(L.back_i))),
+                                                            beyond)));
+    // Each lane's slab k, as the inner loop of march_preint1_float.
+    for (unsigned m = active; m; m &= m - 1) {
+      const int l = __builtin_ctz(m);
+      if (L.T[l] < termination) {
+        finish(l);
+        continue;
+      }
+      const FloatLookup::Spot following =
+          table.find({L.back_i[l], L.back_w[l]}, {L.next_i[l], L.next_w[l]});
+      const Float4 v = table.blend(L.spot[l]);
+      L.C[l] += L.T[l] * v;
+      L.T[l] *= 1 - v[3];
+      L.front_s[l] = L.back_s[l];
+      L.back_s[l] = L.next_s[l], L.back_i[l] = L.next_i[l], L.back_w[l] = L.next_w[l];
+      L.spot[l] = following;
+      ++L.k[l];
+    }
+  }
+}
+
+}  // namespace vri::detail
