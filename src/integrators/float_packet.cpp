@@ -22,11 +22,11 @@ struct Lanes {
   alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0, grid units
   alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
   alignas(32) int k[kPacket], stop[kPacket], full[kPacket];
-  alignas(32) float back_s[kPacket], back_w[kPacket], next_s[kPacket], next_w[kPacket];
-  alignas(32) int back_i[kPacket], next_i[kPacket];
-  alignas(16) Float4 C[kPacket];
-  float T[kPacket], front_s[kPacket];
-  FloatLookup::Spot spot[kPacket];
+  alignas(32) float front_s[kPacket], back_s[kPacket], back_w[kPacket];  // the slab's samples, back's place
+  alignas(32) int back_i[kPacket];
+  alignas(32) int entry[kPacket];  // the slab's spot (FloatLookup::find): its first entry's offset and weights
+  alignas(32) float wf[kPacket], wb[kPacket];
+  alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];  // composited so far
   Interval iv[kPacket];
   double t_check[kPacket];
 };
@@ -57,6 +57,26 @@ VRI_AVX2 __m256 lerp(__m256 a, __m256 b, __m256 f) { return _mm256_add_ps(a, _mm
 // base[index] and base[index + 1] of the 8 lanes, interpolated at f: each
 // pair of neighbouring floats read as one 8-byte element (two 4-element
 // gathers instead of two 8-element ones), then split into the two vectors.
+VRI_AVX2 __m256 load(const float* p) { return _mm256_load_ps(p); }
+VRI_AVX2 __m256i load(const int* p) { return _mm256_load_si256(reinterpret_cast<const __m256i*>(p)); }
+VRI_AVX2 void store(float* p, __m256 v) { _mm256_store_ps(p, v); }
+VRI_AVX2 void store(int* p, __m256i v) { _mm256_store_si256(reinterpret_cast<__m256i*>(p), v); }
+VRI_AVX2 unsigned mask(__m256i m) { return static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(m))); }
+
+// The 4-float table entries data + entry[l] + add of the 8 lanes, as 4
+// vectors (r, g, b, alpha) of 8 lanes: lanes l and l + 4 loaded into one
+// register, then transposed 4 by 4 in each half.
+VRI_AVX2 void corner(const float* data, const int* entry, int add, __m256 channel[4]) {
+  __m256 q[4];
+  for (int l = 0; l < 4; ++l) q[l] = _mm256_loadu2_m128(data + entry[l + 4] + add, data + entry[l] + add);
+  const __m256 t0 = _mm256_unpacklo_ps(q[0], q[1]), t1 = _mm256_unpackhi_ps(q[0], q[1]);
+  const __m256 t2 = _mm256_unpacklo_ps(q[2], q[3]), t3 = _mm256_unpackhi_ps(q[2], q[3]);
+  channel[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+  channel[1] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+  channel[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+  channel[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+}
+
 // Lanes 0 1 4 5 2 3 6 7 (what shuffle_ps leaves) back in order.
 VRI_AVX2 __m256 order(__m256 v) {
   return _mm256_castpd_ps(_mm256_permute4x64_pd(_mm256_castps_pd(v), _MM_SHUFFLE(3, 1, 2, 0)));
@@ -100,15 +120,17 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
     float s;
     FloatLookup::Place place;
   };
-  Lanes L{};  // lanes without a ray read cell 0
+  Lanes L{};  // lanes without a ray read cell 0 and entry 0
+  const int n = table.size();
   const auto sample = [&](int l, long long k) {
-    const float s = sampler.at(Vec3{L.ux[l], L.uy[l], L.uz[l]} + static_cast<double>(k) * Vec3{L.dx[l], L.dy[l], L.dz[l]});
+    const float s =
+        sampler.at(Vec3{L.ux[l], L.uy[l], L.uz[l]} + static_cast<double>(k) * Vec3{L.dx[l], L.dy[l], L.dz[l]});
     return Point{s, table.place(s)};
   };
-  const auto set_back = [&](int l, const Point& p) {
-    L.back_s[l] = p.s;
-    L.back_i[l] = p.place.i;
-    L.back_w[l] = p.place.w;
+  const auto set_slab = [&](int l, const Point& front, const Point& back) {  // FloatLookup::find
+    L.front_s[l] = front.s;
+    L.back_s[l] = back.s, L.back_i[l] = back.place.i, L.back_w[l] = back.place.w;
+    L.entry[l] = 4 * (front.place.i * n + back.place.i), L.wf[l] = front.place.w, L.wb[l] = back.place.w;
   };
   const float termination = static_cast<float>(leap.termination);
   unsigned active = 0;
@@ -122,17 +144,15 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
     L.full[l] = static_cast<int>(std::floor(iv->length() / h));
     const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
     L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
-    const Point front = sample(l, 0), back = L.full[l] > 0 ? sample(l, 1) : front;
-    L.front_s[l] = front.s;
-    set_back(l, back);
-    L.spot[l] = table.find(front.place, back.place);
+    const Point front = sample(l, 0);
+    set_slab(l, front, L.full[l] > 0 ? sample(l, 1) : front);
     L.T[l] = 1;
     L.t_check[l] = -std::numeric_limits<double>::infinity();
     active |= 1u << l;
   }
   const auto finish = [&](int l) {
-    out[l] = finish_preint1_float(sampler, tf, rays[l], L.iv[l], L.full[l], h, L.front_s[l], termination, L.C[l],
-                                  L.T[l]);
+    out[l] = finish_preint1_float(sampler, tf, rays[l], L.iv[l], L.full[l], h, L.front_s[l], termination,
+                                  Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
     active &= ~(1u << l);
   };
   // A lane at its stop: the head of march_preint1_float's outer loop (leap,
@@ -146,55 +166,57 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
       const Point front = sample(l, k);
       L.front_s[l] = front.s;
       if (k == full) return finish(l);
-      const Point back = sample(l, k + 1);
-      set_back(l, back);
-      L.spot[l] = table.find(front.place, back.place);
+      set_slab(l, front, sample(l, k + 1));
     }
     L.stop[l] = static_cast<int>(
         leap.space ? std::clamp(static_cast<long long>(std::ceil((L.t_check[l] - L.iv[l].t0) / h)), k + 1, full)
                    : full);
   };
-  const __m256 lo = _mm256_set1_ps(table.lo()), scale = _mm256_set1_ps(table.scale()), top = _mm256_set1_ps(table.top());
-  const __m256i last = _mm256_set1_epi32(table.size() - 2), two = _mm256_set1_epi32(2);
+  const __m256 lo = _mm256_set1_ps(table.lo()), scale = _mm256_set1_ps(table.scale()),
+               top = _mm256_set1_ps(table.top()), one = _mm256_set1_ps(1), stop_at = _mm256_set1_ps(termination);
+  const __m256i last = _mm256_set1_epi32(n - 2), two = _mm256_set1_epi32(2), n8 = _mm256_set1_epi32(n);
+  const float* data = table.data();
+  const int row = 4 * n;
   while (active) {
-    const __m256i before_stop = _mm256_cmpgt_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(L.stop)),
-                                                   _mm256_load_si256(reinterpret_cast<const __m256i*>(L.k)));
-    for (unsigned m = active & ~static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(before_stop))); m;
-         m &= m - 1)
-      head(__builtin_ctz(m));
+    const unsigned before_stop = mask(_mm256_cmpgt_epi32(load(L.stop), load(L.k)));
+    for (unsigned m = active & ~before_stop; m; m &= m - 1) head(__builtin_ctz(m));
+    // Early termination (the inner loop's check before each slab).
+    const unsigned ended = active & static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(load(L.T), stop_at, _CMP_LT_OQ)));
+    for (unsigned m = ended; m; m &= m - 1) finish(__builtin_ctz(m));
     if (!active) break;
     // Sample k + 2 of every lane and its place on the table axis (FloatLookup::place);
     // past a lane's last full slab its back sample stands in, as in the scalar march.
-    const __m256i k2 = _mm256_add_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(L.k)), two);
+    const __m256i k = load(L.k), k2 = _mm256_add_epi32(k, two);
+    const __m256 beyond = _mm256_castsi256_ps(_mm256_cmpgt_epi32(k2, load(L.full)));
     const __m256 s = sample8(sampler, L, k2);
     const __m256 u = _mm256_min_ps(top, _mm256_max_ps(_mm256_setzero_ps(), _mm256_mul_ps(_mm256_sub_ps(s, lo), scale)));
     const __m256i i = _mm256_min_epi32(_mm256_cvttps_epi32(u), last);
-    const __m256 w = _mm256_sub_ps(u, _mm256_cvtepi32_ps(i));
-    const __m256 beyond =
-        _mm256_castsi256_ps(_mm256_cmpgt_epi32(k2, _mm256_load_si256(reinterpret_cast<const __m256i*>(L.full))));
-    _mm256_store_ps(L.next_s, _mm256_blendv_ps(s, _mm256_load_ps(L.back_s), beyond));
-    _mm256_store_ps(L.next_w, _mm256_blendv_ps(w, _mm256_load_ps(L.back_w), beyond));
-    _mm256_store_si256(reinterpret_cast<__m256i*>(L.next_i),
-                       _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(i), _mm256_castsi256_ps(
-                                                                _mm256_load_si256(reinterpret_cast<const __m256i*>(L.back_i))),
-                                                            beyond)));
-    // Each lane's slab k, as the inner loop of march_preint1_float.
-    for (unsigned m = active; m; m &= m - 1) {
-      const int l = __builtin_ctz(m);
-      if (L.T[l] < termination) {
-        finish(l);
-        continue;
-      }
-      const FloatLookup::Spot following =
-          table.find({L.back_i[l], L.back_w[l]}, {L.next_i[l], L.next_w[l]});
-      const Float4 v = table.blend(L.spot[l]);
-      L.C[l] += L.T[l] * v;
-      L.T[l] *= 1 - v[3];
-      L.front_s[l] = L.back_s[l];
-      L.back_s[l] = L.next_s[l], L.back_i[l] = L.next_i[l], L.back_w[l] = L.next_w[l];
-      L.spot[l] = following;
-      ++L.k[l];
-    }
+    const __m256 back_s = load(L.back_s), back_w = load(L.back_w);
+    const __m256i back_i = load(L.back_i);
+    const __m256 next_s = _mm256_blendv_ps(s, back_s, beyond);
+    const __m256 next_w = _mm256_blendv_ps(_mm256_sub_ps(u, _mm256_cvtepi32_ps(i)), back_w, beyond);
+    const __m256i next_i = _mm256_castps_si256(
+        _mm256_blendv_ps(_mm256_castsi256_ps(i), _mm256_castsi256_ps(back_i), beyond));
+    // Slab k of every lane (FloatLookup::blend, lanes as vectors) composited front to back.
+    __m256 e00[4], e01[4], e10[4], e11[4];
+    corner(data, L.entry, 0, e00);
+    corner(data, L.entry, 4, e01);
+    corner(data, L.entry, row, e10);
+    corner(data, L.entry, row + 4, e11);
+    const __m256 wf = load(L.wf), wb = load(L.wb);
+    __m256 v[4];
+    for (int c = 0; c < 4; ++c) v[c] = lerp(lerp(e00[c], e01[c], wb), lerp(e10[c], e11[c], wb), wf);
+    const __m256 T = load(L.T);
+    store(L.r, _mm256_add_ps(load(L.r), _mm256_mul_ps(T, v[0])));
+    store(L.g, _mm256_add_ps(load(L.g), _mm256_mul_ps(T, v[1])));
+    store(L.b, _mm256_add_ps(load(L.b), _mm256_mul_ps(T, v[2])));
+    store(L.T, _mm256_mul_ps(T, _mm256_sub_ps(one, v[3])));
+    // Slab k + 1: (back, next).
+    store(L.front_s, back_s);
+    store(L.back_s, next_s), store(L.back_w, next_w), store(L.back_i, next_i);
+    store(L.entry, _mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(back_i, n8), next_i), 2));
+    store(L.wf, back_w), store(L.wb, next_w);
+    store(L.k, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
   }
 }
 
