@@ -82,12 +82,15 @@ VRI_AVX2 __m256 order(__m256 v) {
   return _mm256_castpd_ps(_mm256_permute4x64_pd(_mm256_castps_pd(v), _MM_SHUFFLE(3, 1, 2, 0)));
 }
 
-VRI_AVX2 __m256 lerp_pair(const float* base, __m256i index, __m256 f) {
-  // (The masked gather: GCC 12's _mm256_i32gather_pd warns -Wmaybe-uninitialized.)
-  const double* p = reinterpret_cast<const double*>(base);
-  const __m256d zero = _mm256_setzero_pd(), all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-  const __m256 lo = _mm256_castpd_ps(_mm256_mask_i32gather_pd(zero, p, _mm256_castsi256_si128(index), all, 4));
-  const __m256 hi = _mm256_castpd_ps(_mm256_mask_i32gather_pd(zero, p, _mm256_extracti128_si256(index, 1), all, 4));
+// Two lanes' pairs (base[i], base[i + 1]) as one 128-bit register.
+VRI_AVX2 __m128d pairs(const float* base, int i, int j) {
+  const auto at = [base](int k) { return reinterpret_cast<const double*>(base + k); };
+  return _mm_loadh_pd(_mm_load_sd(at(i)), at(j));
+}
+
+VRI_AVX2 __m256 lerp_pair(const float* base, const int* index, __m256 f) {
+  const __m256 lo = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[2], index[3]), pairs(base, index[0], index[1])));
+  const __m256 hi = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[6], index[7]), pairs(base, index[4], index[5])));
   return lerp(order(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0))),
               order(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(3, 1, 3, 1))), f);
 }
@@ -103,9 +106,11 @@ VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const Lanes& L, __m256i k) 
   const __m256i index =
       _mm256_add_epi32(cx, _mm256_add_epi32(_mm256_mullo_epi32(cy, _mm256_set1_epi32(static_cast<int>(sy))),
                                             _mm256_mullo_epi32(cz, _mm256_set1_epi32(static_cast<int>(sz)))));
+  alignas(32) int at[kPacket];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(at), index);
   const float* v = sampler.values();
-  const __m256 c00 = lerp_pair(v, index, fx), c10 = lerp_pair(v + sy, index, fx);
-  const __m256 c01 = lerp_pair(v + sz, index, fx), c11 = lerp_pair(v + sz + sy, index, fx);
+  const __m256 c00 = lerp_pair(v, at, fx), c10 = lerp_pair(v + sy, at, fx);
+  const __m256 c01 = lerp_pair(v + sz, at, fx), c11 = lerp_pair(v + sz + sy, at, fx);
   return lerp(lerp(c00, c10, fy), lerp(c01, c11, fy), fz);
 }
 
