@@ -114,6 +114,47 @@ VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const Lanes& L, __m256i k) 
   return lerp(lerp(c00, c10, fy), lerp(c01, c11, fy), fz);
 }
 
+// FloatLookup::place of 8 scalars: entry i and weight w on the table axis.
+struct TableAxis8 {
+  __m256 lo, scale, top;
+  __m256i last;
+};
+VRI_AVX2 void place8(const TableAxis8& axis, __m256 s, __m256i& i, __m256& w) {
+  const __m256 u = _mm256_min_ps(axis.top, _mm256_max_ps(_mm256_setzero_ps(),
+                                                         _mm256_mul_ps(_mm256_sub_ps(s, axis.lo), axis.scale)));
+  i = _mm256_min_epi32(_mm256_cvttps_epi32(u), axis.last);
+  w = _mm256_sub_ps(u, _mm256_cvtepi32_ps(i));
+}
+
+// All ones in the lanes whose bit is set.
+VRI_AVX2 __m256 lane_mask(unsigned bits) {
+  const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+  return _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(static_cast<int>(bits)), bit), bit));
+}
+VRI_AVX2 __m256i blend(__m256i a, __m256i b, __m256 m) {
+  return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), m));
+}
+
+// Slab k of the lanes in `bits` found anew, at a ray's entry or after a
+// leap: its samples k and k + 1 and its spot (FloatLookup::find).
+VRI_AVX2 void start_slab(const FloatSampler& sampler, const TableAxis8& axis, int n, Lanes& L, unsigned bits) {
+  const __m256 m = lane_mask(bits);
+  const __m256i k = load(L.k);
+  const __m256 front = sample8(sampler, L, k), back = sample8(sampler, L, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
+  __m256i fi, bi;
+  __m256 fw, bw;
+  place8(axis, front, fi, fw);
+  place8(axis, back, bi, bw);
+  store(L.front_s, _mm256_blendv_ps(load(L.front_s), front, m));
+  store(L.back_s, _mm256_blendv_ps(load(L.back_s), back, m));
+  store(L.back_w, _mm256_blendv_ps(load(L.back_w), bw, m));
+  store(L.back_i, blend(load(L.back_i), bi, m));
+  const __m256i entry = _mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(fi, _mm256_set1_epi32(n)), bi), 2);
+  store(L.entry, blend(load(L.entry), entry, m));
+  store(L.wf, _mm256_blendv_ps(load(L.wf), fw, m));
+  store(L.wb, _mm256_blendv_ps(load(L.wb), bw, m));
+}
+
 #undef VRI_AVX2
 
 }  // namespace
@@ -121,22 +162,10 @@ VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const Lanes& L, __m256i k) 
 __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler,
                                                           const FloatLookup& table, const DiscreteTf& tf,
                                                           const Ray* rays, double h, const Leap& leap, Rgba* out) {
-  struct Point {
-    float s;
-    FloatLookup::Place place;
-  };
   Lanes L{};  // lanes without a ray read cell 0 and entry 0
   const int n = table.size();
-  const auto sample = [&](int l, long long k) {
-    const float s =
-        sampler.at(Vec3{L.ux[l], L.uy[l], L.uz[l]} + static_cast<double>(k) * Vec3{L.dx[l], L.dy[l], L.dz[l]});
-    return Point{s, table.place(s)};
-  };
-  const auto set_slab = [&](int l, const Point& front, const Point& back) {  // FloatLookup::find
-    L.front_s[l] = front.s;
-    L.back_s[l] = back.s, L.back_i[l] = back.place.i, L.back_w[l] = back.place.w;
-    L.entry[l] = 4 * (front.place.i * n + back.place.i), L.wf[l] = front.place.w, L.wb[l] = back.place.w;
-  };
+  const TableAxis8 axis{_mm256_set1_ps(table.lo()), _mm256_set1_ps(table.scale()), _mm256_set1_ps(table.top()),
+                        _mm256_set1_epi32(n - 2)};
   const float termination = static_cast<float>(leap.termination);
   unsigned active = 0;
   for (int l = 0; l < kPacket; ++l) {
@@ -149,42 +178,47 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
     L.full[l] = static_cast<int>(std::floor(iv->length() / h));
     const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
     L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
-    const Point front = sample(l, 0);
-    set_slab(l, front, L.full[l] > 0 ? sample(l, 1) : front);
     L.T[l] = 1;
     L.t_check[l] = -std::numeric_limits<double>::infinity();
     active |= 1u << l;
   }
+  start_slab(sampler, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
   const auto finish = [&](int l) {
     out[l] = finish_preint1_float(sampler, tf, rays[l], L.iv[l], L.full[l], h, L.front_s[l], termination,
                                   Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
     active &= ~(1u << l);
   };
   // A lane at its stop: the head of march_preint1_float's outer loop (leap,
-  // next stop) or, past its last full slab, its end.
+  // next stop) or, past its last full slab, its end. Returns whether it leapt
+  // (its new slab is then still to be found).
   const auto head = [&](int l) {
-    long long k = L.k[l];
-    const long long full = L.full[l];
-    if (k >= full) return finish(l);
-    if (const long long j = leap_target(leap, rays[l], L.iv[l], h, 1, k, full, L.t_check[l]); j > k) {
-      k = L.k[l] = static_cast<int>(j);
-      const Point front = sample(l, k);
-      L.front_s[l] = front.s;
-      if (k == full) return finish(l);
-      set_slab(l, front, sample(l, k + 1));
+    const long long k = L.k[l], full = L.full[l];
+    if (k >= full) {
+      finish(l);
+      return false;
     }
-    L.stop[l] = static_cast<int>(
-        leap.space ? std::clamp(static_cast<long long>(std::ceil((L.t_check[l] - L.iv[l].t0) / h)), k + 1, full)
-                   : full);
+    const long long j = leap_target(leap, rays[l], L.iv[l], h, 1, k, full, L.t_check[l]);
+    L.k[l] = static_cast<int>(j);
+    if (j < full)
+      L.stop[l] = static_cast<int>(
+          leap.space ? std::clamp(static_cast<long long>(std::ceil((L.t_check[l] - L.iv[l].t0) / h)), j + 1, full)
+                     : full);
+    return j > k;
   };
-  const __m256 lo = _mm256_set1_ps(table.lo()), scale = _mm256_set1_ps(table.scale()),
-               top = _mm256_set1_ps(table.top()), one = _mm256_set1_ps(1), stop_at = _mm256_set1_ps(termination);
-  const __m256i last = _mm256_set1_epi32(n - 2), two = _mm256_set1_epi32(2), n8 = _mm256_set1_epi32(n);
+  const __m256 one = _mm256_set1_ps(1), stop_at = _mm256_set1_ps(termination);
+  const __m256i two = _mm256_set1_epi32(2), n8 = _mm256_set1_epi32(n);
   const float* data = table.data();
   const int row = 4 * n;
   while (active) {
     const unsigned before_stop = mask(_mm256_cmpgt_epi32(load(L.stop), load(L.k)));
-    for (unsigned m = active & ~before_stop; m; m &= m - 1) head(__builtin_ctz(m));
+    unsigned leapt = 0;
+    for (unsigned m = active & ~before_stop; m; m &= m - 1)
+      if (const int l = __builtin_ctz(m); head(l)) leapt |= 1u << l;
+    if (leapt) {
+      start_slab(sampler, axis, n, L, leapt);
+      for (unsigned m = leapt; m; m &= m - 1)  // leapt to the end: the partial slab from sample `full`
+        if (const int l = __builtin_ctz(m); L.k[l] == L.full[l]) finish(l);
+    }
     // Early termination (the inner loop's check before each slab).
     const unsigned ended = active & static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(load(L.T), stop_at, _CMP_LT_OQ)));
     for (unsigned m = ended; m; m &= m - 1) finish(__builtin_ctz(m));
@@ -194,14 +228,14 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
     const __m256i k = load(L.k), k2 = _mm256_add_epi32(k, two);
     const __m256 beyond = _mm256_castsi256_ps(_mm256_cmpgt_epi32(k2, load(L.full)));
     const __m256 s = sample8(sampler, L, k2);
-    const __m256 u = _mm256_min_ps(top, _mm256_max_ps(_mm256_setzero_ps(), _mm256_mul_ps(_mm256_sub_ps(s, lo), scale)));
-    const __m256i i = _mm256_min_epi32(_mm256_cvttps_epi32(u), last);
+    __m256i i;
+    __m256 w;
+    place8(axis, s, i, w);
     const __m256 back_s = load(L.back_s), back_w = load(L.back_w);
     const __m256i back_i = load(L.back_i);
     const __m256 next_s = _mm256_blendv_ps(s, back_s, beyond);
-    const __m256 next_w = _mm256_blendv_ps(_mm256_sub_ps(u, _mm256_cvtepi32_ps(i)), back_w, beyond);
-    const __m256i next_i = _mm256_castps_si256(
-        _mm256_blendv_ps(_mm256_castsi256_ps(i), _mm256_castsi256_ps(back_i), beyond));
+    const __m256 next_w = _mm256_blendv_ps(w, back_w, beyond);
+    const __m256i next_i = blend(i, back_i, beyond);
     // Slab k of every lane (FloatLookup::blend, lanes as vectors) composited front to back.
     __m256 e00[4], e01[4], e10[4], e11[4];
     corner(data, L.entry, 0, e00);
