@@ -11,7 +11,7 @@
 
 namespace vri::detail {
 
-bool packets_fit(const FloatSampler&, const FloatLookup&, const GridVolume& volume) {
+bool packets_fit(const GridVolume& volume) {
   return __builtin_cpu_supports("avx2") && volume.values().size() <= static_cast<std::size_t>(INT_MAX);
 }
 
@@ -159,6 +159,8 @@ VRI_AVX2 void start_slab(const FloatSampler& sampler, const TableAxis8& axis, in
 
 }  // namespace
 
+// AVX2 without FMA on purpose: GCC fuses a * b + c wherever FMA is enabled
+// (even in ISO C++ mode), which would change the bytes against the scalar march.
 __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler,
                                                           const FloatLookup& table, const DiscreteTf& tf,
                                                           const Ray* rays, double h, const Leap& leap, Rgba* out) {

@@ -1,10 +1,12 @@
 #pragma once
 // Packets of rays for preint1's unlit float path (issue 8;
-// docs/PERFORMANCE.md, "Interactive speed"): kPacket rays marched together,
-// their samples interpolated 8 at a time with AVX2 (gathers of the trilinear
-// corners) while each ray keeps its own sample positions u0 + k du, leaps,
-// table lookups, compositing and partial last slab, exactly as
-// march_preint1_float (float_march.hpp) does them: the same bytes, ray by ray.
+// docs/PERFORMANCE.md, "Interactive speed"): kPacket neighbouring rays
+// marched together with AVX2, one ray a lane. Each lane keeps its own sample
+// positions u0 + k du, leaps (its own macro-cell queries) and partial last
+// slab; per step the 8 lanes' samples are interpolated, placed on the table
+// axis, looked up and composited as 8-lane vectors with the operations of
+// march_preint1_float (float_march.hpp) in the same order, and no FMA (the
+// kernel is compiled for AVX2 alone): the same bytes, ray by ray.
 #include "ray_steps.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/core/rgba.hpp"
@@ -17,9 +19,9 @@ namespace vri::detail {
 
 inline constexpr int kPacket = 8;
 
-// True where the CPU has AVX2 and the volume's and table's offsets fit the
-// 32-bit gather indices; else the rays are marched one by one.
-bool packets_fit(const FloatSampler& sampler, const FloatLookup& table, const GridVolume& volume);
+// True where the CPU has AVX2 and the volume's offsets fit 32-bit lanes;
+// else the rays are marched one by one.
+bool packets_fit(const GridVolume& volume);
 
 // out[i] = march_preint1_float(..., rays[i], ...) for i < kPacket.
 void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatLookup& table,

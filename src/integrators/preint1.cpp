@@ -20,7 +20,7 @@ Preint1Integrator::Preint1Integrator(const GridVolume& volume, const TransferFun
       float_math_(fast.float_math),
       float_sampler_(volume),
       float_table_(table_),
-      packets_(!lighting.enabled && float_math_ && detail::packets_fit(float_sampler_, float_table_, volume)) {
+      packets_(!lighting.enabled && float_math_ && detail::packets_fit(volume)) {
   if (!lighting.enabled) return;
   if (lighting.mode != "sampled" && lighting.mode != "interpolated")
     throw Error("preint1: lighting mode must be sampled or interpolated, got '" + lighting.mode + "'");
