@@ -1,6 +1,7 @@
 #include "vri/integrators/preint1.hpp"
 
 #include "float_march.hpp"
+#include "float_packet.hpp"
 #include "slab_policies.hpp"
 #include "vri/core/error.hpp"
 #include "vri/tables/slab_integral.hpp"
@@ -18,7 +19,8 @@ Preint1Integrator::Preint1Integrator(const GridVolume& volume, const TransferFun
       fast_(volume, ZeroOpacity(tf_), fast, "preint1"),
       float_math_(fast.float_math),
       float_sampler_(volume),
-      float_table_(table_) {
+      float_table_(table_),
+      packets_(!lighting.enabled && float_math_ && detail::packets_fit(volume)) {
   if (!lighting.enabled) return;
   if (lighting.mode != "sampled" && lighting.mode != "interpolated")
     throw Error("preint1: lighting mode must be sampled or interpolated, got '" + lighting.mode + "'");
@@ -45,6 +47,16 @@ Rgba Preint1Integrator::integrate(const Ray& ray) const {
                                   leap);
   if (float_math_) return detail::march_preint1_float(volume_, float_sampler_, float_table_, tf_, ray, h_, leap);
   return march_uniform_slabs<2>(volume_, ray, h_, slabs::Unlit<2, Table>{table_, tf_}, none, leap);
+}
+
+void Preint1Integrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
+  int i = 0;
+  if (packets_) {
+    const detail::Leap leap{fast_.space(), fast_.termination()};
+    for (; i + detail::kPacket <= n; i += detail::kPacket)
+      detail::march_preint1_packet(volume_, float_sampler_, float_table_, tf_, rays + i, h_, leap, out + i);
+  }
+  for (; i < n; ++i) out[i] = integrate(rays[i]);
 }
 
 }  // namespace vri

@@ -5,6 +5,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <vector>
 
 #include "vri/core/error.hpp"
 
@@ -19,8 +20,14 @@ Image render(const Camera& camera, const Integrator& integrator, const RenderOpt
   auto render_tiles = [&](const tbb::blocked_range<int>& range) {
     for (int t = range.begin(); t != range.end(); ++t) {
       const int x0 = (t % tiles_x) * ts, y0 = (t / tiles_x) * ts;
-      for (int y = y0; y < std::min(H, y0 + ts); ++y)
-        for (int x = x0; x < std::min(W, x0 + ts); ++x) image.set(x, y, integrator.integrate(camera.ray(x, y)));
+      const int x1 = std::min(W, x0 + ts);
+      std::vector<Ray> rays(x1 - x0);
+      std::vector<Rgba> row(x1 - x0);
+      for (int y = y0; y < std::min(H, y0 + ts); ++y) {
+        for (int x = x0; x < x1; ++x) rays[x - x0] = camera.ray(x, y);
+        integrator.integrate_row(rays.data(), x1 - x0, row.data());
+        for (int x = x0; x < x1; ++x) image.set(x, y, row[x - x0]);
+      }
     }
   };
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);

@@ -2,8 +2,8 @@
 // plain one, pixel by pixel: empty-space skipping changes no bit (on
 // preint1's float path and on its double path), early termination changes a
 // pixel by at most its threshold, preint1's float path stays within 1e-4 per
-// channel of its double path, and all give the same bytes with any thread
-// count.
+// channel of its double path, its packets of rays give the bytes of its
+// scalar march, and all give the same bytes with any thread count.
 #include "vri/integrators/fast_path.hpp"
 
 #include <gtest/gtest.h>
@@ -198,6 +198,26 @@ TEST(FastPath, FloatPathIsWithin1e4OfTheDoublePath) {
         max_difference(render_with(scene, spec, kSkip, lighting), render_with(scene, spec, kSkipDouble, lighting));
     EXPECT_LE(worst, 1e-4) << mode;
     EXPECT_GT(worst, 0) << mode;
+  }
+}
+
+// preint1's packets of 8 rays (float_packet.hpp; render hands each tile row
+// to integrate_row) against integrate, ray by ray: the same bytes, with
+// skipping, with and without termination (on a CPU without AVX2 both are the scalar march).
+TEST(FastPath, PacketsGiveTheBytesOfTheScalarFloatPath) {
+  for (const char* file : {"scenes/neghip.json", "scenes/engine.json", "scenes/bonsai.json"}) {
+    const Scene scene = small(file, 32);
+    for (const FastPath& fast : {kSkip, FastPath{.skip_empty = true, .termination = 0.05}}) {
+      MethodSpec spec{.name = "preint1", .step = 1};
+      spec.fast = fast;
+      const auto integrator = make_integrator(spec, scene.grid(), scene.transfer_function);
+      const Camera camera(scene.camera);
+      const Image packets = render(camera, *integrator, {.threads = 1, .tile_size = 32});
+      Image single(camera.width(), camera.height());
+      for (int y = 0; y < camera.height(); ++y)
+        for (int x = 0; x < camera.width(); ++x) single.set(x, y, integrator->integrate(camera.ray(x, y)));
+      expect_same_bytes(packets, single, std::string(file) + " termination " + std::to_string(fast.termination));
+    }
   }
 }
 

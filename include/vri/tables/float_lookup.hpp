@@ -50,6 +50,12 @@ class FloatLookup {
     __builtin_prefetch(e + row_);
     return {e, front.w, back.w};
   }
+  // What `place` and `find` read, for the ray packets (src/integrators/float_packet.cpp).
+  const float* data() const { return data_; }
+  int size() const { return n_; }
+  float lo() const { return lo_; }
+  float scale() const { return scale_; }
+  float top() const { return top_; }
   // Bilinear in the continuous indices of s_f and s_b: premultiplied (r, g, b, alpha).
   Float4 blend(const Spot& spot) const {
     const float* e = spot.entry;

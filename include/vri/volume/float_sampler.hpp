@@ -55,6 +55,13 @@ class FloatSampler {
     return c0 + f[2] * (c1 - c0);
   }
 
+  // The layout `at` reads, for the ray packets (src/integrators/float_packet.cpp).
+  const float* values() const { return values_; }
+  std::size_t stride_y() const { return sy_; }
+  std::size_t stride_z() const { return sz_; }
+  double top(int axis) const { return top_[axis]; }
+  int last_cell(int axis) const { return last_cell_[axis]; }
+
  private:
   const float* values_;
   std::size_t sy_, sz_;

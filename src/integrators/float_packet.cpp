@@ -1,0 +1,264 @@
+#include "float_packet.hpp"
+
+#include <immintrin.h>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <limits>
+
+#include "float_march.hpp"
+
+namespace vri::detail {
+
+bool packets_fit(const GridVolume& volume) {
+  return __builtin_cpu_supports("avx2") && volume.values().size() <= static_cast<std::size_t>(INT_MAX);
+}
+
+namespace {
+
+// Each ray's state, a lane each: what march_preint1_float keeps in locals.
+struct Lanes {
+  alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0, grid units
+  alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
+  alignas(32) int k[kPacket], stop[kPacket], full[kPacket];
+  alignas(32) float front_s[kPacket], back_s[kPacket], back_w[kPacket];  // the slab's samples, back's place
+  alignas(32) int back_i[kPacket];
+  alignas(32) int entry[kPacket];  // the slab's spot (FloatLookup::find): its first entry's offset and weights
+  alignas(32) float wf[kPacket], wb[kPacket];
+  alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];  // composited so far
+  Interval iv[kPacket];
+  double t_check[kPacket];
+};
+
+#define VRI_AVX2 __attribute__((target("avx2"), always_inline)) inline
+
+// One axis of FloatSampler::at for the 8 lanes' samples k: the cell
+// min(trunc(clamp(u0 + k du, 0, top)), last) and the float fraction in it,
+// with the same double operations as the scalar code.
+VRI_AVX2 void cell_axis(const double* u0, const double* du, __m256i k, double top, int last, __m256i& cell,
+                        __m256& fraction) {
+  const __m256d zero = _mm256_setzero_pd(), hi = _mm256_set1_pd(top);
+  __m128i c[2];
+  __m128 f[2];
+  for (int half = 0; half < 2; ++half) {
+    const __m256d kd = _mm256_cvtepi32_pd(half ? _mm256_extracti128_si256(k, 1) : _mm256_castsi256_si128(k));
+    __m256d x = _mm256_add_pd(_mm256_load_pd(u0 + 4 * half), _mm256_mul_pd(kd, _mm256_load_pd(du + 4 * half)));
+    x = _mm256_min_pd(hi, _mm256_max_pd(zero, x));  // std::clamp: x < 0 ? 0 : top < x ? top : x
+    c[half] = _mm_min_epi32(_mm256_cvttpd_epi32(x), _mm_set1_epi32(last));
+    f[half] = _mm256_cvtpd_ps(_mm256_sub_pd(x, _mm256_cvtepi32_pd(c[half])));
+  }
+  cell = _mm256_set_m128i(c[1], c[0]);
+  fraction = _mm256_set_m128(f[1], f[0]);
+}
+
+VRI_AVX2 __m256 lerp(__m256 a, __m256 b, __m256 f) { return _mm256_add_ps(a, _mm256_mul_ps(f, _mm256_sub_ps(b, a))); }
+
+// base[index] and base[index + 1] of the 8 lanes, interpolated at f: each
+// pair of neighbouring floats read as one 8-byte element (two 4-element
+// gathers instead of two 8-element ones), then split into the two vectors.
+VRI_AVX2 __m256 load(const float* p) { return _mm256_load_ps(p); }
+VRI_AVX2 __m256i load(const int* p) { return _mm256_load_si256(reinterpret_cast<const __m256i*>(p)); }
+VRI_AVX2 void store(float* p, __m256 v) { _mm256_store_ps(p, v); }
+VRI_AVX2 void store(int* p, __m256i v) { _mm256_store_si256(reinterpret_cast<__m256i*>(p), v); }
+VRI_AVX2 unsigned mask(__m256i m) { return static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(m))); }
+
+// The 4-float table entries data + entry[l] + add of the 8 lanes, as 4
+// vectors (r, g, b, alpha) of 8 lanes: lanes l and l + 4 loaded into one
+// register, then transposed 4 by 4 in each half.
+VRI_AVX2 void corner(const float* data, const int* entry, int add, __m256 channel[4]) {
+  __m256 q[4];
+  for (int l = 0; l < 4; ++l) q[l] = _mm256_loadu2_m128(data + entry[l + 4] + add, data + entry[l] + add);
+  const __m256 t0 = _mm256_unpacklo_ps(q[0], q[1]), t1 = _mm256_unpackhi_ps(q[0], q[1]);
+  const __m256 t2 = _mm256_unpacklo_ps(q[2], q[3]), t3 = _mm256_unpackhi_ps(q[2], q[3]);
+  channel[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+  channel[1] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+  channel[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+  channel[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+}
+
+// Lanes 0 1 4 5 2 3 6 7 (what shuffle_ps leaves) back in order.
+VRI_AVX2 __m256 order(__m256 v) {
+  return _mm256_castpd_ps(_mm256_permute4x64_pd(_mm256_castps_pd(v), _MM_SHUFFLE(3, 1, 2, 0)));
+}
+
+// Two lanes' pairs (base[i], base[i + 1]) as one 128-bit register.
+VRI_AVX2 __m128d pairs(const float* base, int i, int j) {
+  const auto at = [base](int k) { return reinterpret_cast<const double*>(base + k); };
+  return _mm_loadh_pd(_mm_load_sd(at(i)), at(j));
+}
+
+VRI_AVX2 __m256 lerp_pair(const float* base, const int* index, __m256 f) {
+  const __m256 lo = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[2], index[3]), pairs(base, index[0], index[1])));
+  const __m256 hi = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[6], index[7]), pairs(base, index[4], index[5])));
+  return lerp(order(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0))),
+              order(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(3, 1, 3, 1))), f);
+}
+
+// FloatSampler::at of the 8 lanes' samples k.
+VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const Lanes& L, __m256i k) {
+  __m256i cx, cy, cz;
+  __m256 fx, fy, fz;
+  cell_axis(L.ux, L.dx, k, sampler.top(0), sampler.last_cell(0), cx, fx);
+  cell_axis(L.uy, L.dy, k, sampler.top(1), sampler.last_cell(1), cy, fy);
+  cell_axis(L.uz, L.dz, k, sampler.top(2), sampler.last_cell(2), cz, fz);
+  const std::size_t sy = sampler.stride_y(), sz = sampler.stride_z();
+  const __m256i index =
+      _mm256_add_epi32(cx, _mm256_add_epi32(_mm256_mullo_epi32(cy, _mm256_set1_epi32(static_cast<int>(sy))),
+                                            _mm256_mullo_epi32(cz, _mm256_set1_epi32(static_cast<int>(sz)))));
+  alignas(32) int at[kPacket];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(at), index);
+  const float* v = sampler.values();
+  const __m256 c00 = lerp_pair(v, at, fx), c10 = lerp_pair(v + sy, at, fx);
+  const __m256 c01 = lerp_pair(v + sz, at, fx), c11 = lerp_pair(v + sz + sy, at, fx);
+  return lerp(lerp(c00, c10, fy), lerp(c01, c11, fy), fz);
+}
+
+// FloatLookup::place of 8 scalars: entry i and weight w on the table axis.
+struct TableAxis8 {
+  __m256 lo, scale, top;
+  __m256i last;
+};
+VRI_AVX2 void place8(const TableAxis8& axis, __m256 s, __m256i& i, __m256& w) {
+  const __m256 u = _mm256_min_ps(axis.top, _mm256_max_ps(_mm256_setzero_ps(),
+                                                         _mm256_mul_ps(_mm256_sub_ps(s, axis.lo), axis.scale)));
+  i = _mm256_min_epi32(_mm256_cvttps_epi32(u), axis.last);
+  w = _mm256_sub_ps(u, _mm256_cvtepi32_ps(i));
+}
+
+// All ones in the lanes whose bit is set.
+VRI_AVX2 __m256 lane_mask(unsigned bits) {
+  const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+  return _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(static_cast<int>(bits)), bit), bit));
+}
+VRI_AVX2 __m256i blend(__m256i a, __m256i b, __m256 m) {
+  return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), m));
+}
+
+// Slab k of the lanes in `bits` found anew, at a ray's entry or after a
+// leap: its samples k and k + 1 and its spot (FloatLookup::find).
+VRI_AVX2 void start_slab(const FloatSampler& sampler, const TableAxis8& axis, int n, Lanes& L, unsigned bits) {
+  const __m256 m = lane_mask(bits);
+  const __m256i k = load(L.k);
+  const __m256 front = sample8(sampler, L, k), back = sample8(sampler, L, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
+  __m256i fi, bi;
+  __m256 fw, bw;
+  place8(axis, front, fi, fw);
+  place8(axis, back, bi, bw);
+  store(L.front_s, _mm256_blendv_ps(load(L.front_s), front, m));
+  store(L.back_s, _mm256_blendv_ps(load(L.back_s), back, m));
+  store(L.back_w, _mm256_blendv_ps(load(L.back_w), bw, m));
+  store(L.back_i, blend(load(L.back_i), bi, m));
+  const __m256i entry = _mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(fi, _mm256_set1_epi32(n)), bi), 2);
+  store(L.entry, blend(load(L.entry), entry, m));
+  store(L.wf, _mm256_blendv_ps(load(L.wf), fw, m));
+  store(L.wb, _mm256_blendv_ps(load(L.wb), bw, m));
+}
+
+#undef VRI_AVX2
+
+}  // namespace
+
+// AVX2 without FMA on purpose: GCC fuses a * b + c wherever FMA is enabled
+// (even in ISO C++ mode), which would change the bytes against the scalar march.
+__attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler,
+                                                          const FloatLookup& table, const DiscreteTf& tf,
+                                                          const Ray* rays, double h, const Leap& leap, Rgba* out) {
+  Lanes L{};  // lanes without a ray read cell 0 and entry 0
+  const int n = table.size();
+  const TableAxis8 axis{_mm256_set1_ps(table.lo()), _mm256_set1_ps(table.scale()), _mm256_set1_ps(table.top()),
+                        _mm256_set1_epi32(n - 2)};
+  const float termination = static_cast<float>(leap.termination);
+  unsigned active = 0;
+  for (int l = 0; l < kPacket; ++l) {
+    const auto iv = clip_to_box(rays[l], volume.box_lo(), volume.box_hi());
+    if (!iv) {
+      out[l] = {0, 0, 0, 0};
+      continue;
+    }
+    L.iv[l] = *iv;
+    L.full[l] = static_cast<int>(std::floor(iv->length() / h));
+    const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
+    L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
+    L.T[l] = 1;
+    L.t_check[l] = -std::numeric_limits<double>::infinity();
+    active |= 1u << l;
+  }
+  start_slab(sampler, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
+  const auto finish = [&](int l) {
+    out[l] = finish_preint1_float(sampler, tf, rays[l], L.iv[l], L.full[l], h, L.front_s[l], termination,
+                                  Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
+    active &= ~(1u << l);
+  };
+  // A lane at its stop: the head of march_preint1_float's outer loop (leap,
+  // next stop) or, past its last full slab, its end. Returns whether it leapt
+  // (its new slab is then still to be found).
+  const auto head = [&](int l) {
+    const long long k = L.k[l], full = L.full[l];
+    if (k >= full) {
+      finish(l);
+      return false;
+    }
+    const long long j = leap_target(leap, rays[l], L.iv[l], h, 1, k, full, L.t_check[l]);
+    L.k[l] = static_cast<int>(j);
+    if (j < full)
+      L.stop[l] = static_cast<int>(
+          leap.space ? std::clamp(static_cast<long long>(std::ceil((L.t_check[l] - L.iv[l].t0) / h)), j + 1, full)
+                     : full);
+    return j > k;
+  };
+  const __m256 one = _mm256_set1_ps(1), stop_at = _mm256_set1_ps(termination);
+  const __m256i two = _mm256_set1_epi32(2), n8 = _mm256_set1_epi32(n);
+  const float* data = table.data();
+  const int row = 4 * n;
+  while (active) {
+    const unsigned before_stop = mask(_mm256_cmpgt_epi32(load(L.stop), load(L.k)));
+    unsigned leapt = 0;
+    for (unsigned m = active & ~before_stop; m; m &= m - 1)
+      if (const int l = __builtin_ctz(m); head(l)) leapt |= 1u << l;
+    if (leapt) {
+      start_slab(sampler, axis, n, L, leapt);
+      for (unsigned m = leapt; m; m &= m - 1)  // leapt to the end: the partial slab from sample `full`
+        if (const int l = __builtin_ctz(m); L.k[l] == L.full[l]) finish(l);
+    }
+    // Early termination (the inner loop's check before each slab).
+    const unsigned ended = active & static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(load(L.T), stop_at, _CMP_LT_OQ)));
+    for (unsigned m = ended; m; m &= m - 1) finish(__builtin_ctz(m));
+    if (!active) break;
+    // Sample k + 2 of every lane and its place on the table axis (FloatLookup::place);
+    // past a lane's last full slab its back sample stands in, as in the scalar march.
+    const __m256i k = load(L.k), k2 = _mm256_add_epi32(k, two);
+    const __m256 beyond = _mm256_castsi256_ps(_mm256_cmpgt_epi32(k2, load(L.full)));
+    const __m256 s = sample8(sampler, L, k2);
+    __m256i i;
+    __m256 w;
+    place8(axis, s, i, w);
+    const __m256 back_s = load(L.back_s), back_w = load(L.back_w);
+    const __m256i back_i = load(L.back_i);
+    const __m256 next_s = _mm256_blendv_ps(s, back_s, beyond);
+    const __m256 next_w = _mm256_blendv_ps(w, back_w, beyond);
+    const __m256i next_i = blend(i, back_i, beyond);
+    // Slab k of every lane (FloatLookup::blend, lanes as vectors) composited front to back.
+    __m256 e00[4], e01[4], e10[4], e11[4];
+    corner(data, L.entry, 0, e00);
+    corner(data, L.entry, 4, e01);
+    corner(data, L.entry, row, e10);
+    corner(data, L.entry, row + 4, e11);
+    const __m256 wf = load(L.wf), wb = load(L.wb);
+    __m256 v[4];
+    for (int c = 0; c < 4; ++c) v[c] = lerp(lerp(e00[c], e01[c], wb), lerp(e10[c], e11[c], wb), wf);
+    const __m256 T = load(L.T);
+    store(L.r, _mm256_add_ps(load(L.r), _mm256_mul_ps(T, v[0])));
+    store(L.g, _mm256_add_ps(load(L.g), _mm256_mul_ps(T, v[1])));
+    store(L.b, _mm256_add_ps(load(L.b), _mm256_mul_ps(T, v[2])));
+    store(L.T, _mm256_mul_ps(T, _mm256_sub_ps(one, v[3])));
+    // Slab k + 1: (back, next).
+    store(L.front_s, back_s);
+    store(L.back_s, next_s), store(L.back_w, next_w), store(L.back_i, next_i);
+    store(L.entry, _mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(back_i, n8), next_i), 2));
+    store(L.wf, back_w), store(L.wb, next_w);
+    store(L.k, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
+  }
+}
+
+}  // namespace vri::detail
