@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "float_march.hpp"
@@ -82,10 +83,14 @@ VRI_AVX2 __m256 order(__m256 v) {
   return _mm256_castpd_ps(_mm256_permute4x64_pd(_mm256_castps_pd(v), _MM_SHUFFLE(3, 1, 2, 0)));
 }
 
-// Two lanes' pairs (base[i], base[i + 1]) as one 128-bit register.
+// Two lanes' pairs (base[i], base[i + 1]) as one 128-bit register. The pairs
+// are only 4-byte aligned: read through memcpy (the same movsd/movhpd, without
+// the misaligned double access UBSan rightly reports).
 VRI_AVX2 __m128d pairs(const float* base, int i, int j) {
-  const auto at = [base](int k) { return reinterpret_cast<const double*>(base + k); };
-  return _mm_loadh_pd(_mm_load_sd(at(i)), at(j));
+  double lo, hi;
+  std::memcpy(&lo, base + i, sizeof lo);
+  std::memcpy(&hi, base + j, sizeof hi);
+  return _mm_set_pd(hi, lo);
 }
 
 VRI_AVX2 __m256 lerp_pair(const float* base, const int* index, __m256 f) {
