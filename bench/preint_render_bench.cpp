@@ -5,9 +5,10 @@
 //   BM_PreintRender/<scene>/<method>   method: 0 preint1@a, 1 preint1@1,
 //       2 preint2@a, 3 preint2-dual, 4 preint2@a with a 64^3 table (4 MiB,
 //       cache-resident; 256^3 is 256 MiB), 5 preint1@a on its float path,
-//       with a = 2 (bucky: 4) as in the paper. All skip empty space; 0 and 1
-//       run preint1's double path, like preint2, so the orders compare like
-//       for like (5: what preint1 does by default).
+//       6 and 7 preint2@a on its float path (tables of 256^3 and 64^3),
+//       with a = 2 (bucky: 4) as in the paper. All skip empty space; 0 to 4
+//       run the double paths, so the orders compare like for like; 5 to 7
+//       the float paths, what unlit preint1 and preint2 do by default.
 // Run: ./build/bench/bench_preint_render --benchmark_repetitions=5
 //      --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -37,8 +38,11 @@ vri::MethodSpec method(int scene_index, int index) {
     case 0: return {.name = "preint1", .step = a, .fast = {.float_math = false}};
     case 1: return {.name = "preint1", .step = 1, .fast = {.float_math = false}};
     case 5: return {.name = "preint1", .step = a};
-    case 2: return {.name = "preint2", .step = a};
-    case 4: return {.name = "preint2", .step = a, .table_size = 64, .table_size_given = true};
+    case 2: return {.name = "preint2", .step = a, .fast = {.float_math = false}};
+    case 4:
+      return {.name = "preint2", .step = a, .table_size = 64, .table_size_given = true, .fast = {.float_math = false}};
+    case 6: return {.name = "preint2", .step = a};
+    case 7: return {.name = "preint2", .step = a, .table_size = 64, .table_size_given = true};
     default: return {.name = "preint2-dual"};
   }
 }
@@ -58,12 +62,12 @@ void BM_PreintRender(benchmark::State& state) {
   std::string label = kScenes[s];  // built by appends: GCC 12 warns (-Wrestrict) on a chain of +
   label.append(" ").append(spec.name);
   if (m != 3) label.append("@").append(std::to_string(int(spec.step)));
-  if (m == 4) label.append(" N=64");
-  if (m == 5) label.append(" float");
+  if (m == 4 || m == 7) label.append(" N=64");
+  if (m >= 5) label.append(" float");
   state.SetLabel(label);
 }
 BENCHMARK(BM_PreintRender)
-    ->ArgsProduct({{0, 1, 2}, {0, 1, 2, 3, 4, 5}})
+    ->ArgsProduct({{0, 1, 2}, {0, 1, 2, 3, 4, 5, 6, 7}})
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kMillisecond);
 

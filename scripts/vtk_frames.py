@@ -30,6 +30,7 @@ def render_frames(mapper, prop, cam, size, frames):
     for _ in range(frames):
         win.Modified(); volume.Modified()
         win.Render()
+        win.WaitForCompletion()  # an OpenGL mapper's frame is done only when the GL queue is
     wall, cpu = (time.perf_counter() - t0) / frames, (time.process_time() - c0) / frames
     grab = vtk.vtkWindowToImageFilter()
     grab.SetInput(win)

@@ -18,15 +18,18 @@ bool packets_fit(const GridVolume& volume) {
 
 namespace {
 
-// Each ray's state, a lane each: what march_preint1_float keeps in locals.
+// Each ray's state, a lane each: what march_float keeps in locals, for slabs
+// of Steps steps (1: preint1, 2: preint2).
+template <int Steps>
 struct Lanes {
   alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0, grid units
   alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
   alignas(32) int k[kPacket], stop[kPacket], full[kPacket];
-  alignas(32) float front_s[kPacket], back_s[kPacket], back_w[kPacket];  // the slab's samples, back's place
-  alignas(32) int back_i[kPacket];
-  alignas(32) int entry[kPacket];  // the slab's spot (FloatLookup::find): its first entry's offset and weights
-  alignas(32) float wf[kPacket], wb[kPacket];
+  // The slab's samples, front to back: scalar, entry and weight on the table axis.
+  alignas(32) float s[Steps + 1][kPacket];
+  alignas(32) int i[Steps + 1][kPacket];
+  alignas(32) float w[Steps + 1][kPacket];
+  alignas(32) int entry[kPacket];  // the slab's spot (find): its first entry's offset
   alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];  // composited so far
   Interval iv[kPacket];
   double t_check[kPacket];
@@ -101,6 +104,7 @@ VRI_AVX2 __m256 lerp_pair(const float* base, const int* index, __m256 f) {
 }
 
 // FloatSampler::at of the 8 lanes' samples k.
+template <class Lanes>
 VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const Lanes& L, __m256i k) {
   __m256i cx, cy, cz;
   __m256 fx, fy, fz;
@@ -119,11 +123,14 @@ VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const Lanes& L, __m256i k) 
   return lerp(lerp(c00, c10, fy), lerp(c01, c11, fy), fz);
 }
 
-// FloatLookup::place of 8 scalars: entry i and weight w on the table axis.
+// FloatAxis::place of 8 scalars: entry i and weight w on the table axis.
 struct TableAxis8 {
   __m256 lo, scale, top;
   __m256i last;
 };
+VRI_AVX2 TableAxis8 axis8(const FloatAxis& a) {
+  return {_mm256_set1_ps(a.lo()), _mm256_set1_ps(a.scale()), _mm256_set1_ps(a.top()), _mm256_set1_epi32(a.size() - 2)};
+}
 VRI_AVX2 void place8(const TableAxis8& axis, __m256 s, __m256i& i, __m256& w) {
   const __m256 u = _mm256_min_ps(axis.top, _mm256_max_ps(_mm256_setzero_ps(),
                                                          _mm256_mul_ps(_mm256_sub_ps(s, axis.lo), axis.scale)));
@@ -140,24 +147,59 @@ VRI_AVX2 __m256i blend(__m256i a, __m256i b, __m256 m) {
   return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), m));
 }
 
+// The slab's spot from its samples' entries on the table axis (find): the
+// offset of entry (i_0, ..., i_Steps) in floats.
+template <int Steps>
+VRI_AVX2 __m256i spot8(const __m256i (&i)[Steps + 1], __m256i n) {
+  __m256i e = i[0];
+  for (int j = 1; j <= Steps; ++j) e = _mm256_add_epi32(_mm256_mullo_epi32(e, n), i[j]);
+  return _mm256_slli_epi32(e, 2);
+}
+
+// The slab lookups of the 8 lanes (FloatLookup::blend, SecondOrderFloatLookup::blend
+// with lanes as vectors, the same operations in the same order).
+VRI_AVX2 void blend8(const FloatLookup& table, const Lanes<1>& L, __m256 v[4]) {
+  const float* data = table.data();
+  const int row = 4 * table.size();
+  __m256 e00[4], e01[4], e10[4], e11[4];
+  corner(data, L.entry, 0, e00);
+  corner(data, L.entry, 4, e01);
+  corner(data, L.entry, row, e10);
+  corner(data, L.entry, row + 4, e11);
+  const __m256 wf = load(L.w[0]), wb = load(L.w[1]);
+  for (int c = 0; c < 4; ++c) v[c] = lerp(lerp(e00[c], e01[c], wb), lerp(e10[c], e11[c], wb), wf);
+}
+VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const Lanes<2>& L, __m256 v[4]) {
+  const float* data = table.data();
+  const int row = static_cast<int>(table.row()), plane = static_cast<int>(table.plane());
+  const __m256 wf = load(L.w[0]), wm = load(L.w[1]), wb = load(L.w[2]);
+  __m256 c[2][2][4];  // along s_b at (f, m), f and m each 0 or 1
+  for (int f = 0; f < 2; ++f)
+    for (int m = 0; m < 2; ++m) {
+      __m256 lo[4], hi[4];
+      corner(data, L.entry, f * plane + m * row, lo);
+      corner(data, L.entry, f * plane + m * row + 4, hi);
+      for (int ch = 0; ch < 4; ++ch) c[f][m][ch] = lerp(lo[ch], hi[ch], wb);
+    }
+  for (int ch = 0; ch < 4; ++ch) v[ch] = lerp(lerp(c[0][0][ch], c[0][1][ch], wm), lerp(c[1][0][ch], c[1][1][ch], wm), wf);
+}
+
 // Slab k of the lanes in `bits` found anew, at a ray's entry or after a
-// leap: its samples k and k + 1 and its spot (FloatLookup::find).
-VRI_AVX2 void start_slab(const FloatSampler& sampler, const TableAxis8& axis, int n, Lanes& L, unsigned bits) {
+// leap: its samples k Steps .. (k + 1) Steps and its spot.
+template <int Steps>
+VRI_AVX2 void start_slab(const FloatSampler& sampler, const TableAxis8& axis, int n, Lanes<Steps>& L, unsigned bits) {
   const __m256 m = lane_mask(bits);
-  const __m256i k = load(L.k);
-  const __m256 front = sample8(sampler, L, k), back = sample8(sampler, L, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
-  __m256i fi, bi;
-  __m256 fw, bw;
-  place8(axis, front, fi, fw);
-  place8(axis, back, bi, bw);
-  store(L.front_s, _mm256_blendv_ps(load(L.front_s), front, m));
-  store(L.back_s, _mm256_blendv_ps(load(L.back_s), back, m));
-  store(L.back_w, _mm256_blendv_ps(load(L.back_w), bw, m));
-  store(L.back_i, blend(load(L.back_i), bi, m));
-  const __m256i entry = _mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(fi, _mm256_set1_epi32(n)), bi), 2);
-  store(L.entry, blend(load(L.entry), entry, m));
-  store(L.wf, _mm256_blendv_ps(load(L.wf), fw, m));
-  store(L.wb, _mm256_blendv_ps(load(L.wb), bw, m));
+  const __m256i first = _mm256_mullo_epi32(load(L.k), _mm256_set1_epi32(Steps));
+  __m256i i[Steps + 1];
+  for (int j = 0; j <= Steps; ++j) {
+    const __m256 s = sample8(sampler, L, _mm256_add_epi32(first, _mm256_set1_epi32(j)));
+    __m256 w;
+    place8(axis, s, i[j], w);
+    store(L.s[j], _mm256_blendv_ps(load(L.s[j]), s, m));
+    store(L.w[j], _mm256_blendv_ps(load(L.w[j]), w, m));
+    store(L.i[j], blend(load(L.i[j]), i[j], m));
+  }
+  store(L.entry, blend(load(L.entry), spot8<Steps>(i, _mm256_set1_epi32(n)), m));
 }
 
 #undef VRI_AVX2
@@ -166,13 +208,14 @@ VRI_AVX2 void start_slab(const FloatSampler& sampler, const TableAxis8& axis, in
 
 // AVX2 without FMA on purpose: GCC fuses a * b + c wherever FMA is enabled
 // (even in ISO C++ mode), which would change the bytes against the scalar march.
-__attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler,
-                                                          const FloatLookup& table, const DiscreteTf& tf,
-                                                          const Ray* rays, double h, const Leap& leap, Rgba* out) {
-  Lanes L{};  // lanes without a ray read cell 0 and entry 0
+template <class Lookup>
+__attribute__((target("avx2"))) void march_packet(const GridVolume& volume, const FloatSampler& sampler,
+                                                  const Lookup& table, const DiscreteTf& tf, const Ray* rays, double h,
+                                                  const Leap& leap, Rgba* out) {
+  constexpr int steps = Lookup::kSteps;
+  Lanes<steps> L{};  // lanes without a ray read cell 0 and entry 0
   const int n = table.size();
-  const TableAxis8 axis{_mm256_set1_ps(table.lo()), _mm256_set1_ps(table.scale()), _mm256_set1_ps(table.top()),
-                        _mm256_set1_epi32(n - 2)};
+  const TableAxis8 axis = axis8(table.axis());
   const float termination = static_cast<float>(leap.termination);
   unsigned active = 0;
   for (int l = 0; l < kPacket; ++l) {
@@ -182,7 +225,7 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
       continue;
     }
     L.iv[l] = *iv;
-    L.full[l] = static_cast<int>(std::floor(iv->length() / h));
+    L.full[l] = static_cast<int>(std::floor(iv->length() / (steps * h)));
     const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
     L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
     L.T[l] = 1;
@@ -191,31 +234,30 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
   }
   start_slab(sampler, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
   const auto finish = [&](int l) {
-    out[l] = finish_preint1_float(sampler, tf, rays[l], L.iv[l], L.full[l], h, L.front_s[l], termination,
-                                  Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
+    out[l] = finish_float<steps>(sampler, tf, rays[l], L.iv[l], L.full[l], h, L.s[0][l], termination,
+                                 Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
     active &= ~(1u << l);
   };
-  // A lane at its stop: the head of march_preint1_float's outer loop (leap,
-  // next stop) or, past its last full slab, its end. Returns whether it leapt
-  // (its new slab is then still to be found).
+  // A lane at its stop: the head of march_float's outer loop (leap, next
+  // stop) or, past its last full slab, its end. Returns whether it leapt (its
+  // new slab is then still to be found).
   const auto head = [&](int l) {
     const long long k = L.k[l], full = L.full[l];
     if (k >= full) {
       finish(l);
       return false;
     }
-    const long long j = leap_target(leap, rays[l], L.iv[l], h, 1, k, full, L.t_check[l]);
+    const long long j = leap_target(leap, rays[l], L.iv[l], h, steps, k, full, L.t_check[l]);
     L.k[l] = static_cast<int>(j);
     if (j < full)
       L.stop[l] = static_cast<int>(
-          leap.space ? std::clamp(static_cast<long long>(std::ceil((L.t_check[l] - L.iv[l].t0) / h)), j + 1, full)
-                     : full);
+          leap.space
+              ? std::clamp(static_cast<long long>(std::ceil((L.t_check[l] - L.iv[l].t0) / (steps * h))), j + 1, full)
+              : full);
     return j > k;
   };
   const __m256 one = _mm256_set1_ps(1), stop_at = _mm256_set1_ps(termination);
-  const __m256i two = _mm256_set1_epi32(2), n8 = _mm256_set1_epi32(n);
-  const float* data = table.data();
-  const int row = 4 * n;
+  const __m256i n8 = _mm256_set1_epi32(n);
   while (active) {
     const unsigned before_stop = mask(_mm256_cmpgt_epi32(load(L.stop), load(L.k)));
     unsigned leapt = 0;
@@ -223,47 +265,56 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
       if (const int l = __builtin_ctz(m); head(l)) leapt |= 1u << l;
     if (leapt) {
       start_slab(sampler, axis, n, L, leapt);
-      for (unsigned m = leapt; m; m &= m - 1)  // leapt to the end: the partial slab from sample `full`
+      for (unsigned m = leapt; m; m &= m - 1)  // leapt to the end: the partial slab from sample `full` Steps
         if (const int l = __builtin_ctz(m); L.k[l] == L.full[l]) finish(l);
     }
     // Early termination (the inner loop's check before each slab).
     const unsigned ended = active & static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(load(L.T), stop_at, _CMP_LT_OQ)));
     for (unsigned m = ended; m; m &= m - 1) finish(__builtin_ctz(m));
     if (!active) break;
-    // Sample k + 2 of every lane and its place on the table axis (FloatLookup::place);
-    // past a lane's last full slab its back sample stands in, as in the scalar march.
-    const __m256i k = load(L.k), k2 = _mm256_add_epi32(k, two);
-    const __m256 beyond = _mm256_castsi256_ps(_mm256_cmpgt_epi32(k2, load(L.full)));
-    const __m256 s = sample8(sampler, L, k2);
-    __m256i i;
-    __m256 w;
-    place8(axis, s, i, w);
-    const __m256 back_s = load(L.back_s), back_w = load(L.back_w);
-    const __m256i back_i = load(L.back_i);
-    const __m256 next_s = _mm256_blendv_ps(s, back_s, beyond);
-    const __m256 next_w = _mm256_blendv_ps(w, back_w, beyond);
-    const __m256i next_i = blend(i, back_i, beyond);
-    // Slab k of every lane (FloatLookup::blend, lanes as vectors) composited front to back.
-    __m256 e00[4], e01[4], e10[4], e11[4];
-    corner(data, L.entry, 0, e00);
-    corner(data, L.entry, 4, e01);
-    corner(data, L.entry, row, e10);
-    corner(data, L.entry, row + 4, e11);
-    const __m256 wf = load(L.wf), wb = load(L.wb);
+    // Samples 1 .. Steps of slab k + 1 of every lane and their places on the
+    // table axis; past a lane's last full slab its back sample stands in, as
+    // in the scalar march.
+    const __m256i k = load(L.k), k1 = _mm256_add_epi32(k, _mm256_set1_epi32(1));
+    const __m256 beyond = _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_add_epi32(k, _mm256_set1_epi32(2)), load(L.full)));
+    const __m256i next_first = _mm256_mullo_epi32(k1, _mm256_set1_epi32(steps));
+    const __m256 back_s = load(L.s[steps]), back_w = load(L.w[steps]);
+    const __m256i back_i = load(L.i[steps]);
+    __m256 next_s[steps + 1], next_w[steps + 1];
+    __m256i next_i[steps + 1];
+    next_s[0] = back_s, next_w[0] = back_w, next_i[0] = back_i;
+    for (int j = 1; j <= steps; ++j) {
+      const __m256 s = sample8(sampler, L, _mm256_add_epi32(next_first, _mm256_set1_epi32(j)));
+      __m256i i;
+      __m256 w;
+      place8(axis, s, i, w);
+      next_s[j] = _mm256_blendv_ps(s, back_s, beyond);
+      next_w[j] = _mm256_blendv_ps(w, back_w, beyond);
+      next_i[j] = blend(i, back_i, beyond);
+    }
+    // Slab k of every lane looked up and composited front to back.
     __m256 v[4];
-    for (int c = 0; c < 4; ++c) v[c] = lerp(lerp(e00[c], e01[c], wb), lerp(e10[c], e11[c], wb), wf);
+    blend8(table, L, v);
     const __m256 T = load(L.T);
     store(L.r, _mm256_add_ps(load(L.r), _mm256_mul_ps(T, v[0])));
     store(L.g, _mm256_add_ps(load(L.g), _mm256_mul_ps(T, v[1])));
     store(L.b, _mm256_add_ps(load(L.b), _mm256_mul_ps(T, v[2])));
     store(L.T, _mm256_mul_ps(T, _mm256_sub_ps(one, v[3])));
-    // Slab k + 1: (back, next).
-    store(L.front_s, back_s);
-    store(L.back_s, next_s), store(L.back_w, next_w), store(L.back_i, next_i);
-    store(L.entry, _mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(back_i, n8), next_i), 2));
-    store(L.wf, back_w), store(L.wb, next_w);
-    store(L.k, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
+    // Slab k + 1.
+    for (int j = 0; j <= steps; ++j) store(L.s[j], next_s[j]), store(L.w[j], next_w[j]), store(L.i[j], next_i[j]);
+    store(L.entry, spot8<steps>(next_i, n8));
+    store(L.k, k1);
   }
+}
+
+void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatLookup& table,
+                          const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out) {
+  march_packet(volume, sampler, table, tf, rays, h, leap, out);
+}
+
+void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler, const SecondOrderFloatLookup& table,
+                          const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out) {
+  march_packet(volume, sampler, table, tf, rays, h, leap, out);
 }
 
 }  // namespace vri::detail

@@ -1,17 +1,18 @@
 #pragma once
-// Packets of rays for preint1's unlit float path (issue 8;
+// Packets of rays for the unlit float paths of preint1 and preint2 (issue 8;
 // docs/PERFORMANCE.md, "Interactive speed"): kPacket neighbouring rays
 // marched together with AVX2, one ray a lane. Each lane keeps its own sample
-// positions u0 + k du, leaps (its own macro-cell queries) and partial last
-// slab; per step the 8 lanes' samples are interpolated, placed on the table
-// axis, looked up and composited as 8-lane vectors with the operations of
-// march_preint1_float (float_march.hpp) in the same order, and no FMA (the
-// kernel is compiled for AVX2 alone): the same bytes, ray by ray.
+// positions u0 + i du, leaps (its own macro-cell queries) and partial last
+// slab; per slab the 8 lanes' new samples are interpolated, placed on the
+// table axis, looked up and composited as 8-lane vectors with the operations
+// of march_float (float_march.hpp) in the same order, and no FMA (the kernel
+// is compiled for AVX2 alone): the same bytes, ray by ray.
 #include "ray_steps.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/core/rgba.hpp"
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/float_lookup.hpp"
+#include "vri/tables/second_order_float_lookup.hpp"
 #include "vri/volume/float_sampler.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -23,8 +24,10 @@ inline constexpr int kPacket = 8;
 // else the rays are marched one by one.
 bool packets_fit(const GridVolume& volume);
 
-// out[i] = march_preint1_float(..., rays[i], ...) for i < kPacket.
+// out[i] = march_float(..., table, ..., rays[i], ...) for i < kPacket.
 void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatLookup& table,
+                          const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out);
+void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler, const SecondOrderFloatLookup& table,
                           const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out);
 
 }  // namespace vri::detail

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "float_march.hpp"
+#include "float_packet.hpp"
 #include "slab_policies.hpp"
 #include "vri/core/error.hpp"
 
@@ -32,7 +34,9 @@ Preint2Integrator::Preint2Integrator(const GridVolume& volume, const TransferFun
     : volume_(volume),
       h_(detail::world_step(volume, step, "preint2")),
       tf_(tf, table_size),
-      fast_(volume, ZeroOpacity(tf_, TableOrder::Second), fast, "preint2") {
+      fast_(volume, ZeroOpacity(tf_, TableOrder::Second), fast, "preint2"),
+      float_sampler_(volume),
+      packets_(!lighting.enabled && fast.float_math && detail::packets_fit(volume)) {
   const auto make = make_second_order_builder(builder);
   if (lighting.enabled) {
     if (lighting.mode != "sampled" && lighting.mode != "interpolated")
@@ -43,6 +47,7 @@ Preint2Integrator::Preint2Integrator(const GridVolume& volume, const TransferFun
     weighted_.emplace(make->build_weighted(tf_, 2 * h_, iterations));
   else
     table_.emplace(make->build(tf_, 2 * h_, iterations));
+  if (!lighting.enabled && fast.float_math) float_table_.emplace(*table_);
 }
 
 const SecondOrderTable& Preint2Integrator::table() const { return weighted_ ? weighted_->full : *table_; }
@@ -57,12 +62,23 @@ Rgba Preint2Integrator::integrate(const Ray& ray) const {
     return march_uniform_slabs<3>(volume_, ray, h_, slabs::Interpolated2{{tf_, *shader_, ray.dir}, *weighted_},
                                   prefetch, leap);
   }
+  if (float_table_) return detail::march_float(volume_, float_sampler_, *float_table_, tf_, ray, h_, leap);
   const auto prefetch = [&](const auto& s) { prefetch_rows(*table_, s); };
   using Table = SecondOrderTable;
   if (shader_)
     return march_uniform_slabs<3>(volume_, ray, h_, slabs::Sampled<3, Table>{*table_, tf_, *shader_, ray.dir},
                                   prefetch, leap);
   return march_uniform_slabs<3>(volume_, ray, h_, slabs::Unlit<3, Table>{*table_, tf_}, prefetch, leap);
+}
+
+void Preint2Integrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
+  int i = 0;
+  if (packets_) {
+    const detail::Leap leap{fast_.space(), fast_.termination()};
+    for (; i + detail::kPacket <= n; i += detail::kPacket)
+      detail::march_preint2_packet(volume_, float_sampler_, *float_table_, tf_, rays + i, h_, leap, out + i);
+  }
+  for (; i < n; ++i) out[i] = integrate(rays[i]);
 }
 
 }  // namespace vri

@@ -1,9 +1,9 @@
 // The fast path of riemann, preint1 and preint2 (fast_path.hpp) against the
-// plain one, pixel by pixel: empty-space skipping changes no bit (on
-// preint1's float path and on its double path), early termination changes a
-// pixel by at most its threshold, preint1's float path stays within 1e-4 per
-// channel of its double path, its packets of rays give the bytes of its
-// scalar march, and all give the same bytes with any thread count.
+// plain one, pixel by pixel: empty-space skipping changes no bit (on the float
+// paths of preint1 and preint2 and on their double paths), early termination
+// changes a pixel by at most its threshold, the float paths stay within 1e-4
+// per channel of the double paths, their packets of rays give the bytes of
+// their scalar marches, and all give the same bytes with any thread count.
 #include "vri/integrators/fast_path.hpp"
 
 #include <gtest/gtest.h>
@@ -77,6 +77,8 @@ TEST(FastPath, Preint2SkippingChangesNoBitOnNeghip) {
       const MethodSpec spec{.name = "preint2", .step = step, .table_size = 64, .iterations = 16, .builder = builder};
       expect_same_bytes(render_with(scene, spec, kPlain), render_with(scene, spec, kSkip),
                         std::string("preint2 ") + builder + " step " + std::to_string(step));
+      expect_same_bytes(render_with(scene, spec, kPlainDouble), render_with(scene, spec, kSkipDouble),
+                        std::string("preint2 double ") + builder + " step " + std::to_string(step));
     }
 }
 
@@ -140,9 +142,12 @@ TEST(FastPath, SkippingChangesNoBitOnRandomTransferFunctionsAndAlignedRays) {
         expect_same_bytes(render_with(scene, spec, kPlain), render_with(scene, spec, kSkip),
                           std::string(name) + " trial " + std::to_string(trial) + " view " + std::to_string(view));
       }
-      const MethodSpec spec{.name = "preint1", .step = 1};
-      expect_same_bytes(render_with(scene, spec, kPlainDouble), render_with(scene, spec, kSkipDouble),
-                        "preint1 double trial " + std::to_string(trial) + " view " + std::to_string(view));
+      for (const char* name : {"preint1", "preint2"}) {
+        const MethodSpec spec{.name = name, .step = 1, .table_size = 64, .iterations = 16};
+        expect_same_bytes(render_with(scene, spec, kPlainDouble), render_with(scene, spec, kSkipDouble),
+                          std::string(name) + " double trial " + std::to_string(trial) + " view " +
+                              std::to_string(view));
+      }
     }
   }
 }
@@ -173,21 +178,22 @@ TEST(FastPath, TerminationChangesAPixelByAtMostItsThreshold) {
   }
 }
 
-// preint1's float path (float_march.hpp; lit: ray_steps.hpp's FloatScalar)
-// against its double path, the reference: within 1e-4 per channel on the
-// bundled scenes (neghip at two steps), lit or not, and not the same image (the float
-// path is the one taken).
+// The float paths of preint1 and preint2 (float_march.hpp; lit preint1:
+// ray_steps.hpp's FloatScalar) against their double paths, the reference:
+// within 1e-4 per channel on the bundled scenes (neghip at two steps), lit or
+// not, and not the same image (the float path is the one taken).
 TEST(FastPath, FloatPathIsWithin1e4OfTheDoublePath) {
-  for (const char* file : {"scenes/neghip.json", "scenes/engine.json", "scenes/bonsai.json"}) {
-    const Scene scene = small(file, 40);
-    for (double step : {1.0, 0.37}) {
-      if (step != 1.0 && std::string(file) != "scenes/neghip.json") continue;  // keeps the program under 3 s
-      const MethodSpec spec{.name = "preint1", .step = step};
-      const double worst = max_difference(render_with(scene, spec, kSkip), render_with(scene, spec, kSkipDouble));
-      EXPECT_LE(worst, 1e-4) << file << " step " << step;
-      EXPECT_GT(worst, 0) << file << " step " << step;
+  for (const char* file : {"scenes/neghip.json", "scenes/engine.json", "scenes/bonsai.json"})
+    for (const char* name : {"preint1", "preint2"}) {
+      const Scene scene = small(file, 40);
+      for (double step : {1.0, 0.37}) {
+        if (step != 1.0 && std::string(file) != "scenes/neghip.json") continue;  // keeps the program under 3 s
+        const MethodSpec spec{.name = name, .step = step, .table_size = 64, .iterations = 16};
+        const double worst = max_difference(render_with(scene, spec, kSkip), render_with(scene, spec, kSkipDouble));
+        EXPECT_LE(worst, 1e-4) << name << " " << file << " step " << step;
+        EXPECT_GT(worst, 0) << name << " " << file << " step " << step;
+      }
     }
-  }
   // Lit: the scalar samples (both modes) and the table lookups (sampled) in float.
   const Scene scene = small("scenes/neghip_lit.json", 48);
   Lighting lighting = scene.lighting;
@@ -201,23 +207,26 @@ TEST(FastPath, FloatPathIsWithin1e4OfTheDoublePath) {
   }
 }
 
-// preint1's packets of 8 rays (float_packet.hpp; render hands each tile row
-// to integrate_row) against integrate, ray by ray: the same bytes, with
-// skipping, with and without termination (on a CPU without AVX2 both are the scalar march).
+// The packets of 8 rays of preint1 and preint2 (float_packet.hpp; render
+// hands each tile row to integrate_row) against integrate, ray by ray: the
+// same bytes, with skipping, with and without termination (on a CPU without
+// AVX2 both are the scalar march).
 TEST(FastPath, PacketsGiveTheBytesOfTheScalarFloatPath) {
   for (const char* file : {"scenes/neghip.json", "scenes/engine.json", "scenes/bonsai.json"}) {
     const Scene scene = small(file, 32);
-    for (const FastPath& fast : {kSkip, FastPath{.skip_empty = true, .termination = 0.05}}) {
-      MethodSpec spec{.name = "preint1", .step = 1};
-      spec.fast = fast;
-      const auto integrator = make_integrator(spec, scene.grid(), scene.transfer_function);
-      const Camera camera(scene.camera);
-      const Image packets = render(camera, *integrator, {.threads = 1, .tile_size = 32});
-      Image single(camera.width(), camera.height());
-      for (int y = 0; y < camera.height(); ++y)
-        for (int x = 0; x < camera.width(); ++x) single.set(x, y, integrator->integrate(camera.ray(x, y)));
-      expect_same_bytes(packets, single, std::string(file) + " termination " + std::to_string(fast.termination));
-    }
+    const Camera camera(scene.camera);
+    for (const char* name : {"preint1", "preint2"})
+      for (const FastPath& fast : {kSkip, FastPath{.skip_empty = true, .termination = 0.05}}) {
+        MethodSpec spec{.name = name, .step = 1, .table_size = 64, .iterations = 16};
+        spec.fast = fast;
+        const auto integrator = make_integrator(spec, scene.grid(), scene.transfer_function);
+        const Image packets = render(camera, *integrator, {.threads = 1, .tile_size = 32});
+        Image single(camera.width(), camera.height());
+        for (int y = 0; y < camera.height(); ++y)
+          for (int x = 0; x < camera.width(); ++x) single.set(x, y, integrator->integrate(camera.ray(x, y)));
+        expect_same_bytes(packets, single,
+                          std::string(name) + " " + file + " termination " + std::to_string(fast.termination));
+      }
   }
 }
 

@@ -29,7 +29,9 @@
 // macro cells classified empty for second-order entries (ZeroOpacity with
 // TableOrder::Second: the parabola's overshoot stays in zero opacity) are
 // leapt over on the same samples, so the image keeps its bytes; early
-// termination as in preint1.
+// termination as in preint1. Unless fast.float_math is off, unlit preint2
+// works in float as preint1 does (float_march.hpp, SecondOrderFloatLookup),
+// on packets of 8 rays where the CPU has AVX2; lit, it stays in double.
 #include <optional>
 #include <string>
 
@@ -38,8 +40,10 @@
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/shading/lighting.hpp"
 #include "vri/tables/discrete_tf.hpp"
+#include "vri/tables/second_order_float_lookup.hpp"
 #include "vri/tables/second_order_table.hpp"
 #include "vri/tables/second_order_weighted.hpp"
+#include "vri/volume/float_sampler.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri {
@@ -59,6 +63,9 @@ class Preint2Integrator final : public Integrator {
                     int iterations, const std::string& builder, const Lighting& lighting = {},
                     const FastPath& fast = {});
   Rgba integrate(const Ray& ray) const override;
+  // Unlit on the float path, on a CPU with AVX2: packets of 8 neighbouring
+  // rays (float_packet.hpp), the same bytes as integrate.
+  void integrate_row(const Ray* rays, int n, Rgba* out) const override;
   std::string_view name() const override { return "preint2"; }
 
   // The unweighted table (weighted tables' `full` when interpolated).
@@ -72,6 +79,9 @@ class Preint2Integrator final : public Integrator {
   std::optional<SecondOrderWeightedTables> weighted_;  // when lit and interpolated
   std::optional<HeadlightShader> shader_;              // when lit
   detail::Skipping fast_;
+  FloatSampler float_sampler_;
+  std::optional<SecondOrderFloatLookup> float_table_;  // unlit on the float path
+  bool packets_;                                       // integrate_row marches packets
 };
 
 }  // namespace vri

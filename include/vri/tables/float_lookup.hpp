@@ -5,6 +5,7 @@
 // entries are blended as 4-float vectors (GCC vector extension; SSE2 on
 // x86-64). An all-zero neighbourhood gives exactly zero, as the double lookup.
 #include <algorithm>
+#include <array>
 #include <cstring>
 
 #include "vri/core/rgba.hpp"
@@ -14,20 +15,18 @@ namespace vri {
 
 using Float4 = float __attribute__((vector_size(16)));
 
-class FloatLookup {
+// A scalar's place on a table axis in float: entry i and the weight w of
+// entry i + 1, the continuous index (s - s_lo) * scale clamped as
+// ScalarAxis::index, the scale precomputed (no division). Found once per
+// sample, it serves the slabs on both sides of it.
+class FloatAxis {
  public:
-  explicit FloatLookup(const PreintegrationTable& table)
-      : data_(table.data().data()),
-        n_(table.size()),
-        row_(4 * static_cast<std::size_t>(n_)),
-        lo_(static_cast<float>(table.axis().s_lo)),
-        scale_(table.axis().s_hi > table.axis().s_lo
-                   ? static_cast<float>((n_ - 1) / (table.axis().s_hi - table.axis().s_lo))
-                   : 0.0f),
-        top_(static_cast<float>(n_ - 1)) {}
+  explicit FloatAxis(const ScalarAxis& axis)
+      : n_(axis.n),
+        lo_(static_cast<float>(axis.s_lo)),
+        scale_(axis.s_hi > axis.s_lo ? static_cast<float>((axis.n - 1) / (axis.s_hi - axis.s_lo)) : 0.0f),
+        top_(static_cast<float>(axis.n - 1)) {}
 
-  // A scalar's place on the table axis: entry i and the weight w of entry i + 1
-  // (found once per sample: it serves the slabs on both sides).
   struct Place {
     int i;
     float w;
@@ -37,6 +36,31 @@ class FloatLookup {
     const int i = std::min(static_cast<int>(u), n_ - 2);
     return {i, u - i};
   }
+  // What `place` reads, for the ray packets (src/integrators/float_packet.cpp).
+  int size() const { return n_; }
+  float lo() const { return lo_; }
+  float scale() const { return scale_; }
+  float top() const { return top_; }
+
+ private:
+  int n_;
+  float lo_, scale_, top_;
+};
+
+inline Float4 load_float4(const float* p) {
+  Float4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+class FloatLookup {
+ public:
+  static constexpr int kSteps = 1;  // a slab is one step: front and back samples
+  explicit FloatLookup(const PreintegrationTable& table)
+      : axis_(table.axis()), data_(table.data().data()), n_(table.size()), row_(4 * static_cast<std::size_t>(n_)) {}
+
+  using Place = FloatAxis::Place;
+  Place place(float s) const { return axis_.place(s); }
   // Where the lookup of a slab from front to back reads, and the weights of
   // what it reads; finding it starts loading the entries, so a march can find
   // the next slab's spot before it blends the current one.
@@ -50,16 +74,16 @@ class FloatLookup {
     __builtin_prefetch(e + row_);
     return {e, front.w, back.w};
   }
+  Spot find(const std::array<Place, 2>& p) const { return find(p[0], p[1]); }
   // What `place` and `find` read, for the ray packets (src/integrators/float_packet.cpp).
+  const FloatAxis& axis() const { return axis_; }
   const float* data() const { return data_; }
   int size() const { return n_; }
-  float lo() const { return lo_; }
-  float scale() const { return scale_; }
-  float top() const { return top_; }
   // Bilinear in the continuous indices of s_f and s_b: premultiplied (r, g, b, alpha).
   Float4 blend(const Spot& spot) const {
     const float* e = spot.entry;
-    const Float4 e00 = load(e), e01 = load(e + 4), e10 = load(e + row_), e11 = load(e + row_ + 4);
+    const Float4 e00 = load_float4(e), e01 = load_float4(e + 4), e10 = load_float4(e + row_),
+                 e11 = load_float4(e + row_ + 4);
     const Float4 front = e00 + spot.wb * (e01 - e00), back = e10 + spot.wb * (e11 - e10);
     return front + spot.wf * (back - front);
   }
@@ -71,15 +95,10 @@ class FloatLookup {
   }
 
  private:
-  static Float4 load(const float* p) {
-    Float4 v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
+  FloatAxis axis_;
   const float* data_;
   int n_;
   std::size_t row_;  // floats per table row
-  float lo_, scale_, top_;
 };
 
 }  // namespace vri
