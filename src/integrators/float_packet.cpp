@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "float_march.hpp"
+#include "float_riemann.hpp"
 
 namespace vri::detail {
 
@@ -202,6 +203,58 @@ VRI_AVX2 void start_slab(const FloatSampler& sampler, const TableAxis8& axis, in
   store(L.entry, blend(load(L.entry), spot8<Steps>(i, _mm256_set1_epi32(n)), m));
 }
 
+// Each ray's state for riemann, a lane each: what march_riemann_float keeps in locals.
+struct RiemannLanes {
+  alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0, grid units
+  alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
+  alignas(32) double t0[kPacket], t1[kPacket];                // the clipped ray
+  alignas(32) int k[kPacket], stop[kPacket];
+  alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];  // composited so far
+  long long n[kPacket];
+  Interval iv[kPacket];
+};
+
+// FloatTransferFunction::operator() of 8 scalars: the bin's segment, the
+// walk to the segment that holds each scalar (both ways, lanes as masks),
+// then ref + slope (s - s_ref) per channel.
+VRI_AVX2 void transfer8(const FloatTransferFunction& tf, __m256 s, __m256 v[4]) {
+  const __m256 u = _mm256_min_ps(_mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(s, _mm256_set1_ps(tf.lo())),
+                                                             _mm256_set1_ps(tf.scale())),
+                                               _mm256_setzero_ps()),
+                                 _mm256_set1_ps(static_cast<float>(FloatTransferFunction::kBins - 1)));
+  __m256i i = _mm256_i32gather_epi32(tf.first(), _mm256_cvttps_epi32(u), 4);
+  const float* bp = tf.breakpoints();
+  for (;;) {  // up while breakpoint i <= s (the last breakpoint is +inf)
+    const __m256i up = _mm256_castps_si256(_mm256_cmp_ps(_mm256_i32gather_ps(bp, i, 4), s, _CMP_LE_OQ));
+    if (_mm256_testz_si256(up, up)) break;
+    i = _mm256_sub_epi32(i, up);
+  }
+  for (;;) {  // down while i > 0 and breakpoint i - 1 > s
+    const __m256i below = _mm256_max_epi32(_mm256_sub_epi32(i, _mm256_set1_epi32(1)), _mm256_setzero_si256());
+    const __m256i down = _mm256_and_si256(_mm256_cmpgt_epi32(i, _mm256_setzero_si256()),
+                                          _mm256_castps_si256(_mm256_cmp_ps(_mm256_i32gather_ps(bp, below, 4), s, _CMP_GT_OQ)));
+    if (_mm256_testz_si256(down, down)) break;
+    i = _mm256_add_epi32(i, down);
+  }
+  const __m256 ds = _mm256_sub_ps(s, _mm256_i32gather_ps(tf.s_ref(), i, 4));
+  for (int c = 0; c < 4; ++c)
+    v[c] = _mm256_add_ps(_mm256_i32gather_ps(tf.value(c), i, 4), _mm256_mul_ps(_mm256_i32gather_ps(tf.slope(c), i, 4), ds));
+}
+
+// exp_neg (float_riemann.hpp) on 8 lanes, the same operations in the same order.
+VRI_AVX2 __m256 exp_neg8(__m256 x) {
+  using namespace exp_poly;
+  const __m256 y = _mm256_max_ps(_mm256_xor_ps(x, _mm256_set1_ps(-0.0f)), _mm256_set1_ps(kMin));
+  const __m256 n = _mm256_floor_ps(_mm256_add_ps(_mm256_mul_ps(y, _mm256_set1_ps(kLog2e)), _mm256_set1_ps(0.5f)));
+  const __m256 r = _mm256_sub_ps(_mm256_sub_ps(y, _mm256_mul_ps(n, _mm256_set1_ps(kLn2Hi))),
+                                 _mm256_mul_ps(n, _mm256_set1_ps(kLn2Lo)));
+  __m256 p = _mm256_set1_ps(kP[0]);
+  for (int i = 1; i < 6; ++i) p = _mm256_add_ps(_mm256_mul_ps(p, r), _mm256_set1_ps(kP[i]));
+  const __m256 e = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(p, _mm256_mul_ps(r, r)), r), _mm256_set1_ps(1.0f));
+  const __m256i bits = _mm256_slli_epi32(_mm256_add_epi32(_mm256_cvttps_epi32(n), _mm256_set1_epi32(127)), 23);
+  return _mm256_mul_ps(e, _mm256_castsi256_ps(bits));
+}
+
 #undef VRI_AVX2
 
 }  // namespace
@@ -315,6 +368,71 @@ void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler,
 void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler, const SecondOrderFloatLookup& table,
                           const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out) {
   march_packet(volume, sampler, table, tf, rays, h, leap, out);
+}
+
+// riemann's float path on 8 rays (march_riemann_float, float_riemann.hpp).
+__attribute__((target("avx2"))) void march_riemann_packet(const GridVolume& volume, const FloatSampler& sampler,
+                                                          const FloatTransferFunction& tf, const Ray* rays, double h,
+                                                          const Leap& leap, Rgba* out) {
+  RiemannLanes L{};  // lanes without a ray read cell 0
+  const float termination = static_cast<float>(leap.termination);
+  unsigned active = 0;
+  for (int l = 0; l < kPacket; ++l) {
+    const auto iv = clip_to_box(rays[l], volume.box_lo(), volume.box_hi());
+    if (!iv) {
+      out[l] = {0, 0, 0, 0};
+      continue;
+    }
+    L.iv[l] = *iv;
+    L.t0[l] = iv->t0, L.t1[l] = iv->t1;
+    L.n[l] = riemann_samples(*iv, h);
+    const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
+    L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
+    L.T[l] = 1;
+    active |= 1u << l;
+  }
+  const auto finish = [&](int l) {
+    out[l] = {L.r[l], L.g[l], L.b[l], 1 - L.T[l]};
+    active &= ~(1u << l);
+  };
+  const __m256 stop_at = _mm256_set1_ps(termination), one = _mm256_set1_ps(1);
+  const __m256d hd = _mm256_set1_pd(h);
+  while (active) {
+    // Lanes at their stop: a leap and the next stop, or the end.
+    const unsigned before_stop = mask(_mm256_cmpgt_epi32(load(L.stop), load(L.k)));
+    for (unsigned m = active & ~before_stop; m; m &= m - 1) {
+      const int l = __builtin_ctz(m);
+      long long k = L.k[l];
+      L.stop[l] = static_cast<int>(riemann_head(leap, rays[l], L.iv[l], h, L.n[l], k));
+      L.k[l] = static_cast<int>(std::min(k, L.n[l]));
+      if (k >= L.n[l]) finish(l);
+    }
+    // h_k = min(h, t1 - t_k) in double; a lane ends below the termination
+    // threshold or where h_k is not positive.
+    const __m256i k = load(L.k);
+    __m128 hk[2];
+    unsigned positive = 0;
+    for (int half = 0; half < 2; ++half) {
+      const __m256d kd = _mm256_cvtepi32_pd(half ? _mm256_extracti128_si256(k, 1) : _mm256_castsi256_si128(k));
+      const __m256d t = _mm256_add_pd(_mm256_load_pd(L.t0 + 4 * half), _mm256_mul_pd(kd, hd));
+      const __m256d h_k = _mm256_min_pd(_mm256_sub_pd(_mm256_load_pd(L.t1 + 4 * half), t), hd);
+      positive |= static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(h_k, _mm256_setzero_pd(), _CMP_GT_OQ))) << (4 * half);
+      hk[half] = _mm256_cvtpd_ps(h_k);
+    }
+    const unsigned below = static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(load(L.T), stop_at, _CMP_LT_OQ)));
+    for (unsigned m = active & (below | ~positive); m; m &= m - 1) finish(__builtin_ctz(m));
+    if (!active) break;
+    // Sample k of every lane, classified and composited (riemann_step).
+    __m256 v[4];
+    transfer8(tf, sample8(sampler, L, k), v);
+    const __m256 e = exp_neg8(_mm256_mul_ps(v[3], _mm256_set_m128(hk[1], hk[0])));
+    const __m256 T = load(L.T), w = _mm256_mul_ps(T, _mm256_sub_ps(one, e));
+    store(L.r, _mm256_add_ps(load(L.r), _mm256_mul_ps(w, v[0])));
+    store(L.g, _mm256_add_ps(load(L.g), _mm256_mul_ps(w, v[1])));
+    store(L.b, _mm256_add_ps(load(L.b), _mm256_mul_ps(w, v[2])));
+    store(L.T, _mm256_mul_ps(T, e));
+    store(L.k, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
+  }
 }
 
 }  // namespace vri::detail

@@ -1,5 +1,5 @@
 #pragma once
-// Packets of rays for the unlit float paths of preint1 and preint2 (issue 8;
+// Packets of rays for the unlit float paths of riemann, preint1 and preint2 (issue 8;
 // docs/PERFORMANCE.md, "Interactive speed"): kPacket neighbouring rays
 // marched together with AVX2, one ray a lane. Each lane keeps its own sample
 // positions u0 + i du, leaps (its own macro-cell queries) and partial last
@@ -13,6 +13,7 @@
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/float_lookup.hpp"
 #include "vri/tables/second_order_float_lookup.hpp"
+#include "vri/transfer/float_transfer_function.hpp"
 #include "vri/volume/float_sampler.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -29,5 +30,8 @@ void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler,
                           const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out);
 void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler, const SecondOrderFloatLookup& table,
                           const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out);
+// out[i] = march_riemann_float(..., rays[i], ...) for i < kPacket (float_riemann.hpp).
+void march_riemann_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatTransferFunction& tf,
+                          const Ray* rays, double h, const Leap& leap, Rgba* out);
 
 }  // namespace vri::detail

@@ -4,13 +4,21 @@
 #include <limits>
 #include <string>
 
+#include "float_packet.hpp"
+#include "float_riemann.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri {
 
 RiemannIntegrator::RiemannIntegrator(const GridVolume& volume, const TransferFunction& tf,
                                      double step, const Lighting& lighting, const FastPath& fast)
-    : volume_(volume), tf_(tf), fast_(volume, ZeroOpacity(tf), fast, "riemann") {
+    : volume_(volume),
+      tf_(tf),
+      fast_(volume, ZeroOpacity(tf), fast, "riemann"),
+      float_path_(!lighting.enabled && fast.float_math),
+      float_sampler_(volume),
+      float_tf_(tf),
+      packets_(float_path_ && detail::packets_fit(volume)) {
   if (lighting.enabled) shader_.emplace(lighting, volume);
   if (!(step >= 1e-4 && step <= 1e4))
     throw Error("riemann: step must be in [1e-4, 1e4] voxel units, got " + std::to_string(step));
@@ -18,6 +26,9 @@ RiemannIntegrator::RiemannIntegrator(const GridVolume& volume, const TransferFun
 }
 
 Rgba RiemannIntegrator::integrate(const Ray& ray) const {
+  if (float_path_)
+    return detail::march_riemann_float(volume_, float_sampler_, float_tf_, ray, h_,
+                                       {fast_.space(), fast_.termination()});
   const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const double len = iv->length();
@@ -48,6 +59,16 @@ Rgba RiemannIntegrator::integrate(const Ray& ray) const {
     T *= 1 - a;
   }
   return {C[0], C[1], C[2], 1 - T};
+}
+
+void RiemannIntegrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
+  int i = 0;
+  if (packets_) {
+    const detail::Leap leap{fast_.space(), fast_.termination()};
+    for (; i + detail::kPacket <= n; i += detail::kPacket)
+      detail::march_riemann_packet(volume_, float_sampler_, float_tf_, rays + i, h_, leap, out + i);
+  }
+  for (; i < n; ++i) out[i] = integrate(rays[i]);
 }
 
 }  // namespace vri

@@ -1,6 +1,6 @@
 // The fast path of riemann, preint1 and preint2 (fast_path.hpp) against the
 // plain one, pixel by pixel: empty-space skipping changes no bit (on the float
-// paths of preint1 and preint2 and on their double paths), early termination
+// paths of the three and on their double paths), early termination
 // changes a pixel by at most its threshold, the float paths stay within 1e-4
 // per channel of the double paths, their packets of rays give the bytes of
 // their scalar marches, and all give the same bytes with any thread count.
@@ -61,11 +61,12 @@ TEST(FastPath, SkippingChangesNoBitOnNeghip) {
       expect_same_bytes(render_with(scene, spec, kPlain), render_with(scene, spec, kSkip),
                         std::string(name) + " step " + std::to_string(step));
     }
-  for (double step : {1.0, 0.37}) {
-    const MethodSpec spec{.name = "preint1", .step = step};
-    expect_same_bytes(render_with(scene, spec, kPlainDouble), render_with(scene, spec, kSkipDouble),
-                      "preint1 double step " + std::to_string(step));
-  }
+  for (const char* name : {"riemann", "preint1"})
+    for (double step : {1.0, 0.37}) {
+      const MethodSpec spec{.name = name, .step = step};
+      expect_same_bytes(render_with(scene, spec, kPlainDouble), render_with(scene, spec, kSkipDouble),
+                        std::string(name) + " double step " + std::to_string(step));
+    }
 }
 
 // preint2's slabs of two steps, whose parabolas reach beyond their samples
@@ -142,7 +143,7 @@ TEST(FastPath, SkippingChangesNoBitOnRandomTransferFunctionsAndAlignedRays) {
         expect_same_bytes(render_with(scene, spec, kPlain), render_with(scene, spec, kSkip),
                           std::string(name) + " trial " + std::to_string(trial) + " view " + std::to_string(view));
       }
-      for (const char* name : {"preint1", "preint2"}) {
+      for (const char* name : {"riemann", "preint1", "preint2"}) {
         const MethodSpec spec{.name = name, .step = 1, .table_size = 64, .iterations = 16};
         expect_same_bytes(render_with(scene, spec, kPlainDouble), render_with(scene, spec, kSkipDouble),
                           std::string(name) + " double trial " + std::to_string(trial) + " view " +
@@ -178,13 +179,14 @@ TEST(FastPath, TerminationChangesAPixelByAtMostItsThreshold) {
   }
 }
 
-// The float paths of preint1 and preint2 (float_march.hpp; lit preint1:
+// The float paths of riemann, preint1 and preint2 (float_riemann.hpp,
+// float_march.hpp; lit preint1:
 // ray_steps.hpp's FloatScalar) against their double paths, the reference:
 // within 1e-4 per channel on the bundled scenes (neghip at two steps), lit or
 // not, and not the same image (the float path is the one taken).
 TEST(FastPath, FloatPathIsWithin1e4OfTheDoublePath) {
   for (const char* file : {"scenes/neghip.json", "scenes/engine.json", "scenes/bonsai.json"})
-    for (const char* name : {"preint1", "preint2"}) {
+    for (const char* name : {"riemann", "preint1", "preint2"}) {
       const Scene scene = small(file, 40);
       for (double step : {1.0, 0.37}) {
         if (step != 1.0 && std::string(file) != "scenes/neghip.json") continue;  // keeps the program under 3 s
@@ -207,7 +209,7 @@ TEST(FastPath, FloatPathIsWithin1e4OfTheDoublePath) {
   }
 }
 
-// The packets of 8 rays of preint1 and preint2 (float_packet.hpp; render
+// The packets of 8 rays of riemann, preint1 and preint2 (float_packet.hpp; render
 // hands each tile row to integrate_row) against integrate, ray by ray: the
 // same bytes, with skipping, with and without termination (on a CPU without
 // AVX2 both are the scalar march).
@@ -215,7 +217,7 @@ TEST(FastPath, PacketsGiveTheBytesOfTheScalarFloatPath) {
   for (const char* file : {"scenes/neghip.json", "scenes/engine.json", "scenes/bonsai.json"}) {
     const Scene scene = small(file, 32);
     const Camera camera(scene.camera);
-    for (const char* name : {"preint1", "preint2"})
+    for (const char* name : {"riemann", "preint1", "preint2"})
       for (const FastPath& fast : {kSkip, FastPath{.skip_empty = true, .termination = 0.05}}) {
         MethodSpec spec{.name = name, .step = 1, .table_size = 64, .iterations = 16};
         spec.fast = fast;
