@@ -31,19 +31,23 @@ namespace vri::detail {
 // The end of a float march: the pixel (C, 1 - T) once T < termination, else
 // with the partial last slab from the front sample s_front (the sample of slab
 // `full`) to the exit iv.t1 integrated exactly, as on the double path.
-inline Rgba finish_preint1_float(const FloatSampler& sampler, const DiscreteTf& tf, const Ray& ray, const Interval& iv,
-                                 long long full, double h, float s_front, float termination, Float4 C, float T) {
+template <class Value>
+Rgba finish_preint1_float(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf, const Ray& ray,
+                          const Interval& iv, long long full, double h, float s_front, float termination, Float4 C,
+                          float T) {
   const double sub = iv.t1 - (iv.t0 + full * h);
   if (!(T < termination) && sub > 0) {
-    const SlabRgba v = exact_slab(tf, s_front, sampler.at(sampler.grid(ray.at(iv.t1))), sub);
+    const SlabRgba v = exact_slab(tf, s_front, sampler.at(values, sampler.grid(ray.at(iv.t1))), sub);
     C += T * Float4{static_cast<float>(v.r), static_cast<float>(v.g), static_cast<float>(v.b), 0};
     T *= 1 - static_cast<float>(v.a);
   }
   return {C[0], C[1], C[2], 1 - T};
 }
 
-inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sampler, const FloatLookup& table,
-                                const DiscreteTf& tf, const Ray& ray, double h, const Leap& leap) {
+// `values`: the volume's typed samples (GridVolume::visit).
+template <class Value>
+Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sampler, const Value* values,
+                         const FloatLookup& table, const DiscreteTf& tf, const Ray& ray, double h, const Leap& leap) {
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const long long full = static_cast<long long>(std::floor(iv->length() / h));
@@ -53,7 +57,7 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
     FloatLookup::Place place;
   };
   const auto sample = [&](long long k) {
-    const float s = sampler.at(u0 + static_cast<double>(k) * du);
+    const float s = sampler.at(values, u0 + static_cast<double>(k) * du);
     return Point{s, table.place(s)};
   };
   const float termination = static_cast<float>(leap.termination);
@@ -90,7 +94,7 @@ inline Rgba march_preint1_float(const GridVolume& volume, const FloatSampler& sa
       spot = following;
     }
   }
-  return finish_preint1_float(sampler, tf, ray, *iv, full, h, front.s, termination, C, T);
+  return finish_preint1_float(sampler, values, tf, ray, *iv, full, h, front.s, termination, C, T);
 }
 
 }  // namespace vri::detail

@@ -13,7 +13,7 @@
 namespace vri::detail {
 
 bool packets_fit(const GridVolume& volume) {
-  return __builtin_cpu_supports("avx2") && volume.values().size() <= static_cast<std::size_t>(INT_MAX);
+  return __builtin_cpu_supports("avx2") && volume.size() <= static_cast<std::size_t>(INT_MAX);
 }
 
 namespace {
@@ -93,6 +93,16 @@ VRI_AVX2 __m128d pairs(const float* base, int i, int j) {
   return _mm_set_pd(hi, lo);
 }
 
+// The pair (base[i], base[i + 1]) of 1- or 2-byte samples as one integer,
+// base[i] in its low bits (x86 is little-endian); memcpy for the same reason.
+template <class Pair, class T>
+VRI_AVX2 Pair pair(const T* base, int i) {
+  static_assert(sizeof(Pair) == 2 * sizeof(T));
+  Pair p;
+  std::memcpy(&p, base + i, sizeof p);
+  return p;
+}
+
 VRI_AVX2 __m256 lerp_pair(const float* base, const int* index, __m256 f) {
   const __m256 lo = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[2], index[3]), pairs(base, index[0], index[1])));
   const __m256 hi = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[6], index[7]), pairs(base, index[4], index[5])));
@@ -100,8 +110,43 @@ VRI_AVX2 __m256 lerp_pair(const float* base, const int* index, __m256 f) {
               order(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(3, 1, 3, 1))), f);
 }
 
+// The same for 1- and 2-byte samples: each lane's pair in one 32-bit lane,
+// split into base[i] and base[i + 1] and converted to float (exactly, as the
+// scalar path converts them).
+VRI_AVX2 __m256 lerp_pair(const std::uint8_t* base, const int* index, __m256 f) {
+  const __m256i p = _mm256_cvtepu16_epi32(_mm_setr_epi16(
+      static_cast<short>(pair<std::uint16_t>(base, index[0])), static_cast<short>(pair<std::uint16_t>(base, index[1])),
+      static_cast<short>(pair<std::uint16_t>(base, index[2])), static_cast<short>(pair<std::uint16_t>(base, index[3])),
+      static_cast<short>(pair<std::uint16_t>(base, index[4])), static_cast<short>(pair<std::uint16_t>(base, index[5])),
+      static_cast<short>(pair<std::uint16_t>(base, index[6])), static_cast<short>(pair<std::uint16_t>(base, index[7]))));
+  return lerp(_mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xff))),
+              _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 8)), f);
+}
+
+template <class T>
+VRI_AVX2 __m256i pairs16(const T* base, const int* index) {
+  return _mm256_setr_epi32(
+      static_cast<int>(pair<std::uint32_t>(base, index[0])), static_cast<int>(pair<std::uint32_t>(base, index[1])),
+      static_cast<int>(pair<std::uint32_t>(base, index[2])), static_cast<int>(pair<std::uint32_t>(base, index[3])),
+      static_cast<int>(pair<std::uint32_t>(base, index[4])), static_cast<int>(pair<std::uint32_t>(base, index[5])),
+      static_cast<int>(pair<std::uint32_t>(base, index[6])), static_cast<int>(pair<std::uint32_t>(base, index[7])));
+}
+
+VRI_AVX2 __m256 lerp_pair(const std::uint16_t* base, const int* index, __m256 f) {
+  const __m256i p = pairs16(base, index);
+  return lerp(_mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xffff))),
+              _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 16)), f);
+}
+
+VRI_AVX2 __m256 lerp_pair(const std::int16_t* base, const int* index, __m256 f) {
+  const __m256i p = pairs16(base, index);  // sign-extended by the arithmetic shifts
+  return lerp(_mm256_cvtepi32_ps(_mm256_srai_epi32(_mm256_slli_epi32(p, 16), 16)),
+              _mm256_cvtepi32_ps(_mm256_srai_epi32(p, 16)), f);
+}
+
 // FloatSampler::at of the 8 lanes' samples k.
-VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const Lanes& L, __m256i k) {
+template <class T>
+VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const T* v, const Lanes& L, __m256i k) {
   __m256i cx, cy, cz;
   __m256 fx, fy, fz;
   cell_axis(L.ux, L.dx, k, sampler.top(0), sampler.last_cell(0), cx, fx);
@@ -113,7 +158,6 @@ VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const Lanes& L, __m256i k) 
                                             _mm256_mullo_epi32(cz, _mm256_set1_epi32(static_cast<int>(sz)))));
   alignas(32) int at[kPacket];
   _mm256_store_si256(reinterpret_cast<__m256i*>(at), index);
-  const float* v = sampler.values();
   const __m256 c00 = lerp_pair(v, at, fx), c10 = lerp_pair(v + sy, at, fx);
   const __m256 c01 = lerp_pair(v + sz, at, fx), c11 = lerp_pair(v + sz + sy, at, fx);
   return lerp(lerp(c00, c10, fy), lerp(c01, c11, fy), fz);
@@ -142,10 +186,13 @@ VRI_AVX2 __m256i blend(__m256i a, __m256i b, __m256 m) {
 
 // Slab k of the lanes in `bits` found anew, at a ray's entry or after a
 // leap: its samples k and k + 1 and its spot (FloatLookup::find).
-VRI_AVX2 void start_slab(const FloatSampler& sampler, const TableAxis8& axis, int n, Lanes& L, unsigned bits) {
+template <class T>
+VRI_AVX2 void start_slab(const FloatSampler& sampler, const T* values, const TableAxis8& axis, int n, Lanes& L,
+                         unsigned bits) {
   const __m256 m = lane_mask(bits);
   const __m256i k = load(L.k);
-  const __m256 front = sample8(sampler, L, k), back = sample8(sampler, L, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
+  const __m256 front = sample8(sampler, values, L, k),
+               back = sample8(sampler, values, L, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
   __m256i fi, bi;
   __m256 fw, bw;
   place8(axis, front, fi, fw);
@@ -162,13 +209,12 @@ VRI_AVX2 void start_slab(const FloatSampler& sampler, const TableAxis8& axis, in
 
 #undef VRI_AVX2
 
-}  // namespace
-
 // AVX2 without FMA on purpose: GCC fuses a * b + c wherever FMA is enabled
 // (even in ISO C++ mode), which would change the bytes against the scalar march.
-__attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler,
-                                                          const FloatLookup& table, const DiscreteTf& tf,
-                                                          const Ray* rays, double h, const Leap& leap, Rgba* out) {
+template <class Value>
+__attribute__((target("avx2"))) void march_packet(const GridVolume& volume, const FloatSampler& sampler,
+                                                  const Value* values, const FloatLookup& table, const DiscreteTf& tf,
+                                                  const Ray* rays, double h, const Leap& leap, Rgba* out) {
   Lanes L{};  // lanes without a ray read cell 0 and entry 0
   const int n = table.size();
   const TableAxis8 axis{_mm256_set1_ps(table.lo()), _mm256_set1_ps(table.scale()), _mm256_set1_ps(table.top()),
@@ -189,9 +235,9 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
     L.t_check[l] = -std::numeric_limits<double>::infinity();
     active |= 1u << l;
   }
-  start_slab(sampler, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
+  start_slab(sampler, values, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
   const auto finish = [&](int l) {
-    out[l] = finish_preint1_float(sampler, tf, rays[l], L.iv[l], L.full[l], h, L.front_s[l], termination,
+    out[l] = finish_preint1_float(sampler, values, tf, rays[l], L.iv[l], L.full[l], h, L.front_s[l], termination,
                                   Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
     active &= ~(1u << l);
   };
@@ -222,7 +268,7 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
     for (unsigned m = active & ~before_stop; m; m &= m - 1)
       if (const int l = __builtin_ctz(m); head(l)) leapt |= 1u << l;
     if (leapt) {
-      start_slab(sampler, axis, n, L, leapt);
+      start_slab(sampler, values, axis, n, L, leapt);
       for (unsigned m = leapt; m; m &= m - 1)  // leapt to the end: the partial slab from sample `full`
         if (const int l = __builtin_ctz(m); L.k[l] == L.full[l]) finish(l);
     }
@@ -234,7 +280,7 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
     // past a lane's last full slab its back sample stands in, as in the scalar march.
     const __m256i k = load(L.k), k2 = _mm256_add_epi32(k, two);
     const __m256 beyond = _mm256_castsi256_ps(_mm256_cmpgt_epi32(k2, load(L.full)));
-    const __m256 s = sample8(sampler, L, k2);
+    const __m256 s = sample8(sampler, values, L, k2);
     __m256i i;
     __m256 w;
     place8(axis, s, i, w);
@@ -264,6 +310,13 @@ __attribute__((target("avx2"))) void march_preint1_packet(const GridVolume& volu
     store(L.wf, back_w), store(L.wb, next_w);
     store(L.k, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
   }
+}
+
+}  // namespace
+
+void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatLookup& table,
+                          const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out) {
+  volume.visit([&](auto values) { march_packet(volume, sampler, values.data(), table, tf, rays, h, leap, out); });
 }
 
 }  // namespace vri::detail

@@ -23,6 +23,9 @@ class GradientField {
   std::array<double, 8> cell_corners(int axis, std::array<int, 3> cell) const;
 
  private:
+  template <class T>
+  void fill(const T* values);  // central differences of the typed samples
+
   const GridVolume& volume_;
   std::vector<float> g_;  // 3 floats per grid point, x fastest
 };
