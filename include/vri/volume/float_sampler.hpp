@@ -48,9 +48,7 @@ class FloatSampler {
       c[a] = std::min(static_cast<int>(x), last_cell_[a]);
       f[a] = static_cast<float>(x - c[a]);
     }
-    const T* t = values + (static_cast<std::size_t>(c[0]) + sy_ * c[1] + sz_ * c[2]);
-    const float v[8] = {float(t[0]),   float(t[1]),       float(t[sy_]),       float(t[sy_ + 1]),
-                        float(t[sz_]), float(t[sz_ + 1]), float(t[sz_ + sy_]), float(t[sz_ + sy_ + 1])};
+    const auto v = corners_as_float(values + (static_cast<std::size_t>(c[0]) + sy_ * c[1] + sz_ * c[2]), sy_, sz_);
     const float c00 = v[0] + f[0] * (v[1] - v[0]);
     const float c10 = v[2] + f[0] * (v[3] - v[2]);
     const float c01 = v[4] + f[0] * (v[5] - v[4]);

@@ -1,7 +1,9 @@
 #pragma once
 // GradientField (SPEC §5): the gradient at each grid point by central
 // differences (one-sided on the border) divided by the spacing, and between
-// grid points the trilinear interpolation of those vectors.
+// grid points the trilinear interpolation of those vectors. Stored as 3
+// floats per grid point whatever the volume's sample type (docs/PERFORMANCE.md,
+// "Peak memory": lighting's memory is out of issue 8's goal).
 #include <array>
 #include <vector>
 

@@ -95,6 +95,14 @@ class GridVolume {
   float min_ = 0, max_ = 0;
 };
 
+// The 8 corners of the cell whose first corner is `t` (strides 1, sy, sz), in
+// float as a float volume holds them, x fastest: c000 c100 c010 c110 c001 ...
+template <class T>
+std::array<float, 8> corners_as_float(const T* t, std::size_t sy, std::size_t sz) {
+  return {float(t[0]),  float(t[1]),      float(t[sy]),      float(t[sy + 1]),
+          float(t[sz]), float(t[sz + 1]), float(t[sz + sy]), float(t[sz + sy + 1])};
+}
+
 template <class T>
 double GridVolume::sample(const T* values, Vec3 p) const {
   int c[3];
@@ -105,10 +113,7 @@ double GridVolume::sample(const T* values, Vec3 p) const {
     f[a] = u - c[a];
   }
   const std::size_t sy = dims_[0], sz = std::size_t(dims_[0]) * dims_[1];
-  const T* t = values + index(c[0], c[1], c[2]);
-  // The corners in float, as a float volume holds them (the differences below stay in float).
-  const float v[8] = {float(t[0]),  float(t[1]),      float(t[sy]),      float(t[sy + 1]),
-                      float(t[sz]), float(t[sz + 1]), float(t[sz + sy]), float(t[sz + sy + 1])};
+  const auto v = corners_as_float(values + index(c[0], c[1], c[2]), sy, sz);  // differences below in float
   const double c00 = v[0] + f[0] * (v[1] - v[0]);
   const double c10 = v[2] + f[0] * (v[3] - v[2]);
   const double c01 = v[4] + f[0] * (v[5] - v[4]);
