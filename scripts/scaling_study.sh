@@ -9,6 +9,9 @@
 #     scenes/marschner_lobb.json scaled to the volume, 2 threads, with the
 #     peak memory (maximum RSS, /usr/bin/time -v) against the N³ bytes;
 #  3. 1 against 2 threads: bonsai at 512².
+# TABLES (default "image volume threads") picks the tables and SIZES (default
+# "64 128 256 512") the N of table 2: TABLES=volume SIZES=512 gives the peak
+# memory row of issue 8's goal alone.
 # Each render runs REPEATS times (default 3); the row keeps the fastest wall
 # time and that run's CPU time. Times are vri's own "rendered ... in" line
 # (the render alone: not loading, the macro cells or the table). The load
@@ -17,6 +20,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}; reps=${2:-3}
+tables=" ${TABLES:-image volume threads} "; sizes=${SIZES:-64 128 256 512}
 vri=$build/vri; tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 python=/usr/bin/python3  # Debian's, which has numpy
 root=$(pwd)
@@ -42,6 +46,7 @@ best() {
 
 load() { echo "Load average: $(cut -d' ' -f1-3 /proc/loadavg); $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')."; }
 
+if [[ $tables == *" image "* ]]; then
 echo "### Image size (bonsai, step 1, 2 threads)"
 load
 echo
@@ -55,12 +60,15 @@ for size in 128 256 512 1024; do
 done
 echo
 
+fi
+
+if [[ $tables == *" volume "* ]]; then
 echo "### Volume size (Marschner–Lobb N³ uint8, 512², step 1, 2 threads)"
 load
 echo
-echo "| N³ | volume MiB | preint1 wall / CPU ms | riemann wall / CPU ms | preint1 CPU ms / N | max RSS MiB (preint1) | RSS / volume |"
-echo "|---|---|---|---|---|---|---|"
-for n in 64 128 256 512; do
+echo "| N³ | volume MiB | preint1 wall / CPU ms | riemann wall / CPU ms | preint1 CPU ms / N | max RSS MiB (preint1) | max RSS MiB (riemann) | RSS / volume (preint1) |"
+echo "|---|---|---|---|---|---|---|---|"
+for n in $sizes; do
   "$python" - "$n" "$tmp/ml_$n.raw" <<'EOF'
 import sys
 import numpy as np
@@ -84,13 +92,16 @@ EOF
  "background": [0, 0, 0], "method": {"name": "preint1", "step": 1}}
 EOF
   read -r pw pc pr < <(best "$tmp/ml_$n.json" --method preint1 --step 1 --threads 2)
-  read -r rw rc _ < <(best "$tmp/ml_$n.json" --method riemann --step 1 --threads 2)
+  read -r rw rc rr < <(best "$tmp/ml_$n.json" --method riemann --step 1 --threads 2)
   mib=$(awk -v n="$n" 'BEGIN { printf "%.2f", n * n * n / 1048576 }')
-  echo "| ${n}³ | $mib | $pw / $pc | $rw / $rc | $(awk -v c="$pc" -v n="$n" 'BEGIN { printf "%.2f", c / n }') | $pr | $(awk -v r="$pr" -v m="$mib" 'BEGIN { printf "%.1f", r / m }') |"
+  echo "| ${n}³ | $mib | $pw / $pc | $rw / $rc | $(awk -v c="$pc" -v n="$n" 'BEGIN { printf "%.2f", c / n }') | $pr | $rr | $(awk -v r="$pr" -v m="$mib" 'BEGIN { printf "%.1f", r / m }') |"
   rm -f "$tmp/ml_$n.raw"
 done
 echo
 
+fi
+
+if [[ $tables == *" threads "* ]]; then
 echo "### Threads (bonsai, 512², step 1)"
 load
 echo
@@ -112,4 +123,5 @@ for m in preint1 riemann; do
   echo "| $m | ${row[0]} / ${row[1]} | ${row[2]} / ${row[3]} | $(awk -v a="${row[0]}" -v b="${row[2]}" 'BEGIN { printf "%.2f×", a / b }') | $(awk -v c="${row[3]}" -v w="${row[2]}" 'BEGIN { printf "%.2f", c / w }') |"
 done
 echo
+fi
 load

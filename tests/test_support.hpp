@@ -31,6 +31,11 @@ GridVolume volume_from(std::array<int, 3> dims, F&& f, Vec3 spacing = {1, 1, 1},
   return GridVolume(dims, std::move(v), spacing, origin);
 }
 
+// The samples as floats, whatever their stored type.
+inline std::vector<float> floats(const GridVolume& volume) {
+  return volume.visit([](auto v) { return std::vector<float>(v.begin(), v.end()); });
+}
+
 // A random piecewise-linear transfer function over [0, s_max]: some runs of
 // zero opacity, some narrow spikes, occasional steps (unless steps = false).
 inline TransferFunction random_tf(std::mt19937& rng, double s_max, double tau_max, bool steps = true) {

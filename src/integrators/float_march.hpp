@@ -34,15 +34,16 @@ namespace vri::detail {
 // The end of a float march: the pixel (C, 1 - T) once T < termination, else
 // with the partial last slab from the front sample s_front (the first sample
 // of slab `full`) to the exit iv.t1 integrated exactly, as on the double path:
-// Steps linear sub-slabs of equal length.
-template <int Steps>
-Rgba finish_float(const FloatSampler& sampler, const DiscreteTf& tf, const Ray& ray, const Interval& iv,
-                  long long full, double h, float s_front, float termination, Float4 C, float T) {
+// Steps linear sub-slabs of equal length. `values`: the volume's typed
+// samples (GridVolume::visit).
+template <int Steps, class Value>
+Rgba finish_float(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf, const Ray& ray,
+                  const Interval& iv, long long full, double h, float s_front, float termination, Float4 C, float T) {
   const double t_rest = iv.t0 + full * Steps * h;
   const double sub = (iv.t1 - t_rest) / Steps;
   if (!(T < termination) && sub > 0)
     for (int i = 1; i <= Steps; ++i) {
-      const float s_back = sampler.at(sampler.grid(ray.at(i == Steps ? iv.t1 : t_rest + i * sub)));
+      const float s_back = sampler.at(values, sampler.grid(ray.at(i == Steps ? iv.t1 : t_rest + i * sub)));
       const SlabRgba v = exact_slab(tf, s_front, s_back, sub);
       C += T * Float4{static_cast<float>(v.r), static_cast<float>(v.g), static_cast<float>(v.b), 0};
       T *= 1 - static_cast<float>(v.a);
@@ -51,9 +52,9 @@ Rgba finish_float(const FloatSampler& sampler, const DiscreteTf& tf, const Ray& 
   return {C[0], C[1], C[2], 1 - T};
 }
 
-template <class Lookup>
-Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Lookup& table, const DiscreteTf& tf,
-                 const Ray& ray, double h, const Leap& leap) {
+template <class Lookup, class Value>
+Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Value* values, const Lookup& table,
+                 const DiscreteTf& tf, const Ray& ray, double h, const Leap& leap) {
   constexpr int steps = Lookup::kSteps;
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
@@ -65,7 +66,7 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Lo
   };
   using Slab = std::array<Point, steps + 1>;  // the slab's samples, front to back
   const auto sample = [&](long long i) {
-    const float s = sampler.at(u0 + static_cast<double>(i) * du);
+    const float s = sampler.at(values, u0 + static_cast<double>(i) * du);
     return Point{s, table.place(s)};
   };
   // Samples 1 .. steps of slab k into p (p[0] is in hand).
@@ -116,7 +117,7 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Lo
       spot = following;
     }
   }
-  return finish_float<steps>(sampler, tf, ray, *iv, full, h, p[0].s, termination, C, T);
+  return finish_float<steps>(sampler, values, tf, ray, *iv, full, h, p[0].s, termination, C, T);
 }
 
 }  // namespace vri::detail

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 
@@ -14,7 +15,7 @@
 namespace vri::detail {
 
 bool packets_fit(const GridVolume& volume) {
-  return __builtin_cpu_supports("avx2") && volume.values().size() <= static_cast<std::size_t>(INT_MAX);
+  return __builtin_cpu_supports("avx2") && volume.size() <= static_cast<std::size_t>(INT_MAX);
 }
 
 namespace {
@@ -97,6 +98,16 @@ VRI_AVX2 __m128d pairs(const float* base, int i, int j) {
   return _mm_set_pd(hi, lo);
 }
 
+// The pair (base[i], base[i + 1]) of 1- or 2-byte samples as one integer,
+// base[i] in its low bits (x86 is little-endian); memcpy for the same reason.
+template <class Pair, class T>
+VRI_AVX2 Pair pair(const T* base, int i) {
+  static_assert(sizeof(Pair) == 2 * sizeof(T));
+  Pair p;
+  std::memcpy(&p, base + i, sizeof p);
+  return p;
+}
+
 VRI_AVX2 __m256 lerp_pair(const float* base, const int* index, __m256 f) {
   const __m256 lo = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[2], index[3]), pairs(base, index[0], index[1])));
   const __m256 hi = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[6], index[7]), pairs(base, index[4], index[5])));
@@ -104,9 +115,43 @@ VRI_AVX2 __m256 lerp_pair(const float* base, const int* index, __m256 f) {
               order(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(3, 1, 3, 1))), f);
 }
 
+// The same for 1- and 2-byte samples: each lane's pair in one 32-bit lane,
+// split into base[i] and base[i + 1] and converted to float (exactly, as the
+// scalar path converts them).
+VRI_AVX2 __m256 lerp_pair(const std::uint8_t* base, const int* index, __m256 f) {
+  const __m256i p = _mm256_cvtepu16_epi32(_mm_setr_epi16(
+      static_cast<short>(pair<std::uint16_t>(base, index[0])), static_cast<short>(pair<std::uint16_t>(base, index[1])),
+      static_cast<short>(pair<std::uint16_t>(base, index[2])), static_cast<short>(pair<std::uint16_t>(base, index[3])),
+      static_cast<short>(pair<std::uint16_t>(base, index[4])), static_cast<short>(pair<std::uint16_t>(base, index[5])),
+      static_cast<short>(pair<std::uint16_t>(base, index[6])), static_cast<short>(pair<std::uint16_t>(base, index[7]))));
+  return lerp(_mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xff))),
+              _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 8)), f);
+}
+
+template <class T>
+VRI_AVX2 __m256i pairs16(const T* base, const int* index) {
+  return _mm256_setr_epi32(
+      static_cast<int>(pair<std::uint32_t>(base, index[0])), static_cast<int>(pair<std::uint32_t>(base, index[1])),
+      static_cast<int>(pair<std::uint32_t>(base, index[2])), static_cast<int>(pair<std::uint32_t>(base, index[3])),
+      static_cast<int>(pair<std::uint32_t>(base, index[4])), static_cast<int>(pair<std::uint32_t>(base, index[5])),
+      static_cast<int>(pair<std::uint32_t>(base, index[6])), static_cast<int>(pair<std::uint32_t>(base, index[7])));
+}
+
+VRI_AVX2 __m256 lerp_pair(const std::uint16_t* base, const int* index, __m256 f) {
+  const __m256i p = pairs16(base, index);
+  return lerp(_mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xffff))),
+              _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 16)), f);
+}
+
+VRI_AVX2 __m256 lerp_pair(const std::int16_t* base, const int* index, __m256 f) {
+  const __m256i p = pairs16(base, index);  // sign-extended by the arithmetic shifts
+  return lerp(_mm256_cvtepi32_ps(_mm256_srai_epi32(_mm256_slli_epi32(p, 16), 16)),
+              _mm256_cvtepi32_ps(_mm256_srai_epi32(p, 16)), f);
+}
+
 // FloatSampler::at of the 8 lanes' samples k.
-template <class Lanes>
-VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const Lanes& L, __m256i k) {
+template <class Lanes, class T>
+VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const T* v, const Lanes& L, __m256i k) {
   __m256i cx, cy, cz;
   __m256 fx, fy, fz;
   cell_axis(L.ux, L.dx, k, sampler.top(0), sampler.last_cell(0), cx, fx);
@@ -118,7 +163,6 @@ VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const Lanes& L, __m256i k) 
                                             _mm256_mullo_epi32(cz, _mm256_set1_epi32(static_cast<int>(sz)))));
   alignas(32) int at[kPacket];
   _mm256_store_si256(reinterpret_cast<__m256i*>(at), index);
-  const float* v = sampler.values();
   const __m256 c00 = lerp_pair(v, at, fx), c10 = lerp_pair(v + sy, at, fx);
   const __m256 c01 = lerp_pair(v + sz, at, fx), c11 = lerp_pair(v + sz + sy, at, fx);
   return lerp(lerp(c00, c10, fy), lerp(c01, c11, fy), fz);
@@ -187,13 +231,14 @@ VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const Lanes<2>& L, __m
 
 // Slab k of the lanes in `bits` found anew, at a ray's entry or after a
 // leap: its samples k Steps .. (k + 1) Steps and its spot.
-template <int Steps>
-VRI_AVX2 void start_slab(const FloatSampler& sampler, const TableAxis8& axis, int n, Lanes<Steps>& L, unsigned bits) {
+template <int Steps, class T>
+VRI_AVX2 void start_slab(const FloatSampler& sampler, const T* values, const TableAxis8& axis, int n, Lanes<Steps>& L,
+                         unsigned bits) {
   const __m256 m = lane_mask(bits);
   const __m256i first = _mm256_mullo_epi32(load(L.k), _mm256_set1_epi32(Steps));
   __m256i i[Steps + 1];
   for (int j = 0; j <= Steps; ++j) {
-    const __m256 s = sample8(sampler, L, _mm256_add_epi32(first, _mm256_set1_epi32(j)));
+    const __m256 s = sample8(sampler, values, L, _mm256_add_epi32(first, _mm256_set1_epi32(j)));
     __m256 w;
     place8(axis, s, i[j], w);
     store(L.s[j], _mm256_blendv_ps(load(L.s[j]), s, m));
@@ -261,10 +306,10 @@ VRI_AVX2 __m256 exp_neg8(__m256 x) {
 
 // AVX2 without FMA on purpose: GCC fuses a * b + c wherever FMA is enabled
 // (even in ISO C++ mode), which would change the bytes against the scalar march.
-template <class Lookup>
+template <class Lookup, class Value>
 __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, const FloatSampler& sampler,
-                                                  const Lookup& table, const DiscreteTf& tf, const Ray* rays, double h,
-                                                  const Leap& leap, Rgba* out) {
+                                                  const Value* values, const Lookup& table, const DiscreteTf& tf,
+                                                  const Ray* rays, double h, const Leap& leap, Rgba* out) {
   constexpr int steps = Lookup::kSteps;
   Lanes<steps> L{};  // lanes without a ray read cell 0 and entry 0
   const int n = table.size();
@@ -285,9 +330,9 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     L.t_check[l] = -std::numeric_limits<double>::infinity();
     active |= 1u << l;
   }
-  start_slab(sampler, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
+  start_slab(sampler, values, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
   const auto finish = [&](int l) {
-    out[l] = finish_float<steps>(sampler, tf, rays[l], L.iv[l], L.full[l], h, L.s[0][l], termination,
+    out[l] = finish_float<steps>(sampler, values, tf, rays[l], L.iv[l], L.full[l], h, L.s[0][l], termination,
                                  Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
     active &= ~(1u << l);
   };
@@ -317,7 +362,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     for (unsigned m = active & ~before_stop; m; m &= m - 1)
       if (const int l = __builtin_ctz(m); head(l)) leapt |= 1u << l;
     if (leapt) {
-      start_slab(sampler, axis, n, L, leapt);
+      start_slab(sampler, values, axis, n, L, leapt);
       for (unsigned m = leapt; m; m &= m - 1)  // leapt to the end: the partial slab from sample `full` Steps
         if (const int l = __builtin_ctz(m); L.k[l] == L.full[l]) finish(l);
     }
@@ -337,7 +382,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     __m256i next_i[steps + 1];
     next_s[0] = back_s, next_w[0] = back_w, next_i[0] = back_i;
     for (int j = 1; j <= steps; ++j) {
-      const __m256 s = sample8(sampler, L, _mm256_add_epi32(next_first, _mm256_set1_epi32(j)));
+      const __m256 s = sample8(sampler, values, L, _mm256_add_epi32(next_first, _mm256_set1_epi32(j)));
       __m256i i;
       __m256 w;
       place8(axis, s, i, w);
@@ -362,18 +407,19 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
 
 void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatLookup& table,
                           const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out) {
-  march_packet(volume, sampler, table, tf, rays, h, leap, out);
+  volume.visit([&](auto values) { march_packet(volume, sampler, values.data(), table, tf, rays, h, leap, out); });
 }
 
 void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler, const SecondOrderFloatLookup& table,
                           const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out) {
-  march_packet(volume, sampler, table, tf, rays, h, leap, out);
+  volume.visit([&](auto values) { march_packet(volume, sampler, values.data(), table, tf, rays, h, leap, out); });
 }
 
 // riemann's float path on 8 rays (march_riemann_float, float_riemann.hpp).
-__attribute__((target("avx2"))) void march_riemann_packet(const GridVolume& volume, const FloatSampler& sampler,
-                                                          const FloatTransferFunction& tf, const Ray* rays, double h,
-                                                          const Leap& leap, Rgba* out) {
+template <class Value>
+__attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volume, const FloatSampler& sampler,
+                                                         const Value* values, const FloatTransferFunction& tf,
+                                                         const Ray* rays, double h, const Leap& leap, Rgba* out) {
   RiemannLanes L{};  // lanes without a ray read cell 0
   const float termination = static_cast<float>(leap.termination);
   unsigned active = 0;
@@ -424,7 +470,7 @@ __attribute__((target("avx2"))) void march_riemann_packet(const GridVolume& volu
     if (!active) break;
     // Sample k of every lane, classified and composited (riemann_step).
     __m256 v[4];
-    transfer8(tf, sample8(sampler, L, k), v);
+    transfer8(tf, sample8(sampler, values, L, k), v);
     const __m256 e = exp_neg8(_mm256_mul_ps(v[3], _mm256_set_m128(hk[1], hk[0])));
     const __m256 T = load(L.T), w = _mm256_mul_ps(T, _mm256_sub_ps(one, e));
     store(L.r, _mm256_add_ps(load(L.r), _mm256_mul_ps(w, v[0])));
@@ -433,6 +479,11 @@ __attribute__((target("avx2"))) void march_riemann_packet(const GridVolume& volu
     store(L.T, _mm256_mul_ps(T, e));
     store(L.k, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
   }
+}
+
+void march_riemann_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatTransferFunction& tf,
+                          const Ray* rays, double h, const Leap& leap, Rgba* out) {
+  volume.visit([&](auto values) { march_riemann_lanes(volume, sampler, values.data(), tf, rays, h, leap, out); });
 }
 
 }  // namespace vri::detail

@@ -77,8 +77,10 @@ inline long long riemann_samples(const Interval& iv, double h) {
   return std::max(1LL, static_cast<long long>(std::ceil(iv.length() / h)));
 }
 
-inline Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, const FloatTransferFunction& tf,
-                                const Ray& ray, double h, const Leap& leap) {
+// `values`: the volume's typed samples (GridVolume::visit).
+template <class Value>
+Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, const Value* values,
+                         const FloatTransferFunction& tf, const Ray& ray, double h, const Leap& leap) {
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const long long n = riemann_samples(*iv, h);
@@ -91,7 +93,7 @@ inline Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sa
     for (; k < stop; ++k) {
       const double h_k = std::min(h, iv->t1 - (iv->t0 + k * h));
       if (T < termination || !(h_k > 0)) return {C[0], C[1], C[2], 1 - T};
-      riemann_step(tf(sampler.at(u0 + static_cast<double>(k) * du)), static_cast<float>(h_k), C, T);
+      riemann_step(tf(sampler.at(values, u0 + static_cast<double>(k) * du)), static_cast<float>(h_k), C, T);
     }
   }
   return {C[0], C[1], C[2], 1 - T};

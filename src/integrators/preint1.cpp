@@ -45,7 +45,10 @@ Rgba Preint1Integrator::integrate(const Ray& ray) const {
   if (shader_)
     return march_uniform_slabs<2>(volume_, ray, h_, slabs::Sampled<2, Table>{table_, tf_, *shader_, ray.dir}, none,
                                   leap);
-  if (float_math_) return detail::march_float(volume_, float_sampler_, float_table_, tf_, ray, h_, leap);
+  if (float_math_)
+    return volume_.visit([&](auto values) {
+      return detail::march_float(volume_, float_sampler_, values.data(), float_table_, tf_, ray, h_, leap);
+    });
   return march_uniform_slabs<2>(volume_, ray, h_, slabs::Unlit<2, Table>{table_, tf_}, none, leap);
 }
 

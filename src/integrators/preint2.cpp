@@ -62,7 +62,10 @@ Rgba Preint2Integrator::integrate(const Ray& ray) const {
     return march_uniform_slabs<3>(volume_, ray, h_, slabs::Interpolated2{{tf_, *shader_, ray.dir}, *weighted_},
                                   prefetch, leap);
   }
-  if (float_table_) return detail::march_float(volume_, float_sampler_, *float_table_, tf_, ray, h_, leap);
+  if (float_table_)
+    return volume_.visit([&](auto values) {
+      return detail::march_float(volume_, float_sampler_, values.data(), *float_table_, tf_, ray, h_, leap);
+    });
   const auto prefetch = [&](const auto& s) { prefetch_rows(*table_, s); };
   using Table = SecondOrderTable;
   if (shader_)

@@ -93,18 +93,25 @@ inline long long leap_target(const Leap& leap, const Ray& ray, const Interval& i
 }
 
 // The scalar at a sample: GridVolume::sample, or FloatSampler's (preint1's
-// float path, float_march.hpp).
+// float path, float_march.hpp), bound to the volume's typed samples once per
+// ray (GridVolume::visit) so that no sample dispatches on the type.
 struct GridScalar {
-  double operator()(const GridVolume& volume, Vec3 p) const { return volume.sample(p); }
+  template <class T>
+  auto bind(const GridVolume& volume, const T* values) const {
+    return [&volume, values](Vec3 p) { return volume.sample(values, p); };
+  }
 };
 struct FloatScalar {
   const FloatSampler& sampler;
-  double operator()(const GridVolume&, Vec3 p) const { return sampler.at(sampler.grid(p)); }
+  template <class T>
+  auto bind(const GridVolume&, const T* values) const {
+    return [&s = sampler, values](Vec3 p) { return static_cast<double>(s.at(values, s.grid(p))); };
+  }
 };
 
-template <int Samples, class Policy, class Prefetch = NoPrefetch, class Scalar = GridScalar>
-Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, const Policy& policy,
-                         Prefetch&& prefetch = {}, const Leap& leap = {}, const Scalar& scalar = {}) {
+template <int Samples, class Policy, class Prefetch, class Scalar>
+Rgba march_bound(const GridVolume& volume, const Ray& ray, double h, const Policy& policy, Prefetch&& prefetch,
+                 const Leap& leap, const Scalar& scalar) {
   static_assert(Samples >= 2);
   constexpr int steps = Samples - 1;
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
@@ -115,7 +122,7 @@ Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, con
   using Slab = std::array<Sample, Samples>;
   const auto sample_at = [&](double t) {
     const Vec3 p = ray.at(t);
-    return Sample{scalar(volume, p), policy.at(p)};
+    return Sample{scalar(p), policy.at(p)};
   };
   const auto fill = [&](Slab& s, long long k) {
     for (int i = 1; i < Samples; ++i) s[i] = sample_at(iv->t0 + (k * steps + i) * h);
@@ -153,6 +160,14 @@ Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, con
       s[0] = back;
     }
   return acc.result();
+}
+
+template <int Samples, class Policy, class Prefetch = NoPrefetch, class Scalar = GridScalar>
+Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, const Policy& policy,
+                         Prefetch&& prefetch = {}, const Leap& leap = {}, const Scalar& scalar = {}) {
+  return volume.visit([&](auto values) {
+    return march_bound<Samples>(volume, ray, h, policy, prefetch, leap, scalar.bind(volume, values.data()));
+  });
 }
 
 }  // namespace vri::detail

@@ -26,9 +26,16 @@ RiemannIntegrator::RiemannIntegrator(const GridVolume& volume, const TransferFun
 }
 
 Rgba RiemannIntegrator::integrate(const Ray& ray) const {
-  if (float_path_)
-    return detail::march_riemann_float(volume_, float_sampler_, float_tf_, ray, h_,
-                                       {fast_.space(), fast_.termination()});
+  return volume_.visit([&](auto values) {
+    if (float_path_)
+      return detail::march_riemann_float(volume_, float_sampler_, values.data(), float_tf_, ray, h_,
+                                         {fast_.space(), fast_.termination()});
+    return march(ray, values.data());
+  });
+}
+
+template <class Value>
+Rgba RiemannIntegrator::march(const Ray& ray, const Value* values) const {
   const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const double len = iv->length();
@@ -49,7 +56,7 @@ Rgba RiemannIntegrator::integrate(const Ray& ray) const {
       }
     }
     const Vec3 p = ray.at(t);
-    const TfSample v = tf_(volume_.sample(p));
+    const TfSample v = tf_(volume_.sample(values, p));
     if (v.tau == 0) continue;
     const double a = -std::expm1(-v.tau * hk);  // 1 - exp(-tau h), accurate for small tau h
     const auto lit = shader_ ? shader_->at(p, ray.dir) : HeadlightShader::Terms{1, 0};

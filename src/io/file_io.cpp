@@ -30,6 +30,22 @@ std::vector<std::byte> read_file(const fs::path& path) {
   return bytes;
 }
 
+std::uint64_t checked_file_size(const fs::path& path) {
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  if (ec) throw Error("cannot open '" + path.string() + "': " + ec.message());
+  return size;
+}
+
+void read_file_range(const fs::path& path, std::uint64_t offset, std::span<std::byte> out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open '" + path.string() + "': " + std::strerror(errno));
+  in.seekg(static_cast<std::streamoff>(offset));
+  if (!in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(out.size())))
+    throw Error("cannot read " + std::to_string(out.size()) + " bytes at " + std::to_string(offset) + " of '" +
+                path.string() + "'");
+}
+
 void write_file_atomically(const fs::path& path, std::span<const std::byte> bytes) {
   const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
   std::error_code ec;

@@ -2,43 +2,55 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <string>
 
 #include "vri/core/error.hpp"
 
 namespace vri {
 
-std::vector<std::byte> gunzip(std::span<const std::byte> in, std::size_t max_bytes) {
+std::size_t gunzip_into(std::span<const std::byte> in, std::size_t skip, std::span<std::byte> out) {
   z_stream zs{};
   if (inflateInit2(&zs, 15 + 32) != Z_OK) throw Error("zlib: cannot initialise inflate");
-  std::vector<std::byte> out;
+  const auto fail = [&](const std::string& what) {
+    inflateEnd(&zs);
+    throw Error(what);
+  };
   zs.next_in = reinterpret_cast<Bytef*>(const_cast<std::byte*>(in.data()));
   zs.avail_in = static_cast<uInt>(in.size());
+  // The skipped bytes go through a small buffer, the rest into `out`, a
+  // window of at most 1 GiB at a time (avail_out is 32-bit); one spare byte
+  // past the end catches a stream that holds more than it should.
+  std::byte spare[1 << 16];
+  std::size_t written = 0;
   int rc = Z_OK;
-  std::byte chunk[1 << 16];
   while (rc != Z_STREAM_END) {
-    zs.next_out = reinterpret_cast<Bytef*>(chunk);
-    zs.avail_out = sizeof(chunk);
+    Bytef* window;
+    std::size_t room;
+    if (skip > 0) {
+      window = reinterpret_cast<Bytef*>(spare), room = std::min(skip, sizeof spare);
+    } else if (written < out.size()) {
+      window = reinterpret_cast<Bytef*>(out.data() + written), room = std::min<std::size_t>(out.size() - written, 1 << 30);
+    } else {
+      window = reinterpret_cast<Bytef*>(spare), room = 1;
+    }
+    zs.next_out = window;
+    zs.avail_out = static_cast<uInt>(room);
     rc = inflate(&zs, Z_NO_FLUSH);
-    if (rc != Z_OK && rc != Z_STREAM_END) {
-      inflateEnd(&zs);
-      throw Error(std::string("gzip data is corrupt or truncated") +
-                  (zs.msg ? std::string(" (") + zs.msg + ")" : ""));
+    if (rc != Z_OK && rc != Z_STREAM_END)
+      fail(std::string("gzip data is corrupt or truncated") + (zs.msg ? std::string(" (") + zs.msg + ")" : ""));
+    const std::size_t got = room - zs.avail_out;
+    if (skip > 0) {
+      skip -= got;
+    } else if (written < out.size()) {
+      written += got;
+    } else if (got > 0) {
+      fail("gzip data expands beyond the expected " + std::to_string(out.size()) + " bytes");
     }
-    const std::size_t got = sizeof(chunk) - zs.avail_out;
-    if (out.size() + got > max_bytes) {
-      inflateEnd(&zs);
-      throw Error("gzip data expands beyond the expected " + std::to_string(max_bytes) +
-                  " bytes");
-    }
-    out.insert(out.end(), chunk, chunk + got);
-    if (rc == Z_OK && zs.avail_in == 0 && got == 0) {
-      inflateEnd(&zs);
-      throw Error("gzip data is truncated");
-    }
+    if (rc == Z_OK && zs.avail_in == 0 && got == 0) fail("gzip data is truncated");
   }
   inflateEnd(&zs);
-  return out;
+  return written;
 }
 
 std::vector<std::byte> gzip(std::span<const std::byte> in) {

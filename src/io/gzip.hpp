@@ -6,9 +6,10 @@
 
 namespace vri {
 
-// Inflates a gzip or zlib stream; throws vri::Error on corrupt data or if the
-// output would exceed max_bytes.
-std::vector<std::byte> gunzip(std::span<const std::byte> in, std::size_t max_bytes);
+// Inflates a gzip or zlib stream straight into `out` (a volume's storage),
+// dropping its first `skip` bytes; returns the bytes written. Throws
+// vri::Error on corrupt data or if the stream holds more than skip + out.size().
+std::size_t gunzip_into(std::span<const std::byte> in, std::size_t skip, std::span<std::byte> out);
 
 // Deflates into a gzip stream.
 std::vector<std::byte> gzip(std::span<const std::byte> in);

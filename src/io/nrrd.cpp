@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -95,24 +98,23 @@ std::vector<std::vector<double>> parse_vectors(const std::string& text, const st
 }  // namespace
 
 GridVolume read_nrrd(const fs::path& path) {
-  const auto file = read_file(path);
   const std::string where = "NRRD '" + path.string() + "'";
-  if (file.size() < 8 || std::memcmp(file.data(), "NRRD000", 7) != 0)
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open '" + path.string() + "': " + std::strerror(errno));
+  std::string line;
+  if (!std::getline(in, line) || line.rfind("NRRD000", 0) != 0)
     throw Error(where + " does not start with the NRRD magic");
 
   // Header: lines up to the first empty line (or the end of a detached header).
+  // Only the header is read here: the payload goes straight into the volume.
   std::map<std::string, std::string> fields;
-  std::size_t pos = 0, data_start = file.size();
-  bool first = true;
-  while (pos < file.size()) {
-    const auto* begin = reinterpret_cast<const char*>(file.data()) + pos;
-    const auto* nl = static_cast<const char*>(std::memchr(begin, '\n', file.size() - pos));
-    const std::size_t len = nl ? std::size_t(nl - begin) : file.size() - pos;
-    std::string line(begin, len);
-    pos += len + (nl ? 1 : 0);
+  std::uint64_t data_start = checked_file_size(path);
+  while (std::getline(in, line)) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (first) { first = false; continue; }  // the magic line
-    if (line.empty()) { data_start = pos; break; }
+    if (line.empty()) {
+      data_start = static_cast<std::uint64_t>(in.tellg());
+      break;
+    }
     if (line[0] == '#') continue;
     if (line.find(":=") != std::string::npos) continue;  // key/value pairs: ignored
     const auto colon = line.find(": ");
@@ -178,68 +180,84 @@ GridVolume read_nrrd(const fs::path& path) {
   if (const auto* b = field({"byte skip", "byteskip"})) byte_skip = std::atoll(b->c_str());
   if (const auto* l = field({"line skip", "lineskip"})) line_skip = std::atoll(l->c_str());
 
-  // The data: attached after the header, or in a detached file.
-  std::vector<std::byte> detached;
-  std::span<const std::byte> data;
+  // The data: attached after the header, or in a detached file; `start` is
+  // its first byte, `size` the bytes from there to the end.
+  fs::path data_path = path;
+  std::uint64_t start = data_start;
   if (const auto* df = field({"data file", "datafile"})) {
     if (df->rfind("LIST", 0) == 0 || df->find('%') != std::string::npos)
       throw Error(where + ": multi-file data ('" + *df + "') is not supported");
-    fs::path dp(*df);
-    if (dp.is_relative()) dp = path.parent_path() / dp;
-    detached = read_file(dp);
-    data = detached;
-  } else {
-    if (data_start >= file.size() && n > 0) throw Error(where + " has no data after its header");
-    data = std::span(file).subspan(data_start);
+    data_path = *df;
+    if (data_path.is_relative()) data_path = path.parent_path() / data_path;
+    start = 0;
   }
-  for (long long l = 0; l < line_skip; ++l) {
-    const auto* p = static_cast<const std::byte*>(std::memchr(data.data(), '\n', data.size()));
-    if (!p) throw Error(where + ": 'line skip' runs past the data");
-    data = data.subspan(std::size_t(p - data.data()) + 1);
+  const std::uint64_t end = checked_file_size(data_path);
+  if (start >= end && n > 0) throw Error(where + " has no data after its header");
+  if (line_skip > 0) {
+    std::ifstream data(data_path, std::ios::binary);
+    data.seekg(static_cast<std::streamoff>(start));
+    for (long long l = 0; l < line_skip; ++l)
+      if (!data.ignore(std::numeric_limits<std::streamsize>::max(), '\n') || data.tellg() < 0)
+        throw Error(where + ": 'line skip' runs past the data");
+    start = static_cast<std::uint64_t>(data.tellg());
   }
+  const auto rest = [&] {
+    std::vector<std::byte> bytes(end - start);
+    read_file_range(data_path, start, bytes);
+    return bytes;
+  };
 
   const std::uint64_t need = n * scalar_type_size(type);
-  std::vector<std::byte> inflated;
+  const std::array<int, 3> idims{int(dims[0]), int(dims[1]), int(dims[2])};
+  const auto wrong_size = [&](std::uint64_t size) {
+    return Error(where + " holds " + std::to_string(size) + " data bytes, but its sizes and type need " +
+                 std::to_string(need));
+  };
   if (encoding == "raw") {
     if (byte_skip == -1) {
-      if (data.size() < need) throw Error(where + " holds fewer bytes than its sizes need");
-      data = data.subspan(data.size() - need);
+      if (end - start < need) throw Error(where + " holds fewer bytes than its sizes need");
+      start = end - need;
     } else if (byte_skip > 0) {
-      if (std::uint64_t(byte_skip) > data.size()) throw Error(where + ": 'byte skip' runs past the data");
-      data = data.subspan(std::size_t(byte_skip));
+      if (std::uint64_t(byte_skip) > end - start) throw Error(where + ": 'byte skip' runs past the data");
+      start += std::uint64_t(byte_skip);
     }
-  } else if (encoding == "gzip" || encoding == "gz") {
-    inflated = gunzip(data, need + std::max<long long>(byte_skip, 0));
-    data = inflated;
-    if (byte_skip > 0) data = data.subspan(std::min<std::size_t>(data.size(), std::size_t(byte_skip)));
-  } else if (encoding == "ascii" || encoding == "text" || encoding == "txt") {
-    const std::string text(reinterpret_cast<const char*>(data.data()), data.size());
+    if (end - start != need) throw wrong_size(end - start);
+    return GridVolume(idims, GridVolume::decode(type, endian, n, [&](std::span<std::byte> out) {
+                        read_file_range(data_path, start, out);
+                      }), spacing, origin);
+  }
+  if (encoding == "gzip" || encoding == "gz") {
+    const std::vector<std::byte> packed = rest();
+    return GridVolume(idims, GridVolume::decode(type, endian, n, [&](std::span<std::byte> out) {
+                        const std::size_t got = gunzip_into(packed, std::max<long long>(byte_skip, 0), out);
+                        if (got != need) throw wrong_size(got);
+                      }), spacing, origin);
+  }
+  if (encoding == "ascii" || encoding == "text" || encoding == "txt") {
+    const std::vector<std::byte> bytes = rest();
+    const std::string text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     const auto v = parse_numbers(text, "data");
     if (v.size() != n)
       throw Error(where + " holds " + std::to_string(v.size()) + " ascii values, expected " + std::to_string(n));
-    std::vector<float> values(v.begin(), v.end());
-    GridVolume vol({int(dims[0]), int(dims[1]), int(dims[2])}, std::move(values), spacing, origin);
-    return vol;
-  } else {
-    throw Error(where + ": encoding '" + encoding + "' is not supported (raw, gzip, ascii)");
+    return GridVolume(idims, std::vector<float>(v.begin(), v.end()), spacing, origin);
   }
-  if (data.size() != need)
-    throw Error(where + " holds " + std::to_string(data.size()) + " data bytes, but its sizes and type need " +
-                std::to_string(need));
-  return GridVolume({int(dims[0]), int(dims[1]), int(dims[2])}, decode_samples(data, type, endian, n),
-                    spacing, origin);
+  throw Error(where + ": encoding '" + encoding + "' is not supported (raw, gzip, ascii)");
 }
 
 void write_nrrd(const fs::path& path, const GridVolume& volume, NrrdEncoding encoding) {
   const auto& d = volume.dims();
-  const auto& v = volume.values();
-  std::span<const std::byte> raw(reinterpret_cast<const std::byte*>(v.data()), v.size() * sizeof(float));
+  // The samples as stored (little-endian, as this machine holds them).
+  const std::span<const std::byte> raw = volume.visit([](auto v) { return std::as_bytes(v); });
+  const char* type = volume.type() == ScalarType::UInt8    ? "uchar"
+                     : volume.type() == ScalarType::UInt16 ? "ushort"
+                     : volume.type() == ScalarType::Int16  ? "short"
+                                                           : "float";
   std::vector<std::byte> payload = encoding == NrrdEncoding::Gzip ? gzip(raw)
                                                                   : std::vector<std::byte>(raw.begin(), raw.end());
   const bool detached = path.extension() == ".nhdr";
   std::ostringstream h;
   h.precision(17);
-  h << "NRRD0004\n# written by vri\ntype: float\ndimension: 3\n"
+  h << "NRRD0004\n# written by vri\ntype: " << type << "\ndimension: 3\n"
     << "sizes: " << d[0] << " " << d[1] << " " << d[2] << "\n"
     << "spacings: " << volume.spacing().x << " " << volume.spacing().y << " " << volume.spacing().z << "\n"
     << "space origin: (" << volume.origin().x << "," << volume.origin().y << "," << volume.origin().z << ")\n"

@@ -11,19 +11,14 @@ GridVolume read_raw_volume(const std::filesystem::path& path, std::array<std::in
                            ScalarType type, Endian endian) {
   const std::uint64_t n = GridVolume::checked_sample_count(dims);
   const std::uint64_t need = n * scalar_type_size(type);
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec && size != need)  // check before reading: an oversized file is refused cheaply
+  const std::uint64_t size = checked_file_size(path);
+  if (size != need)  // check before reading: an oversized file is refused cheaply
     throw Error("'" + path.string() + "' is " + std::to_string(size) + " bytes, but " +
                 std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" +
                 std::to_string(dims[2]) + " " + scalar_type_name(type) + " needs " +
                 std::to_string(need));
-  const auto bytes = read_file(path);
-  if (bytes.size() != need)
-    throw Error("'" + path.string() + "' is " + std::to_string(bytes.size()) +
-                " bytes, expected " + std::to_string(need));
   return GridVolume({int(dims[0]), int(dims[1]), int(dims[2])},
-                    decode_samples(bytes, type, endian, n));
+                    GridVolume::decode(type, endian, n, [&](std::span<std::byte> out) { read_file_range(path, 0, out); }));
 }
 
 }  // namespace vri

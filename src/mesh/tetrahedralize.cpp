@@ -24,10 +24,10 @@ TetMesh tetrahedralize(const GridVolume& grid, int tets_per_cell) {
   const auto& n = grid.dims();
   const Vec3 sp = grid.spacing(), org = grid.origin();
   const std::size_t cells = std::size_t(n[0] - 1) * (n[1] - 1) * (n[2] - 1);
-  if (grid.values().size() > std::size_t{INT32_MAX} / 2 || cells * tets_per_cell > std::size_t{INT32_MAX})
+  if (grid.size() > std::size_t{INT32_MAX} / 2 || cells * tets_per_cell > std::size_t{INT32_MAX})
     throw Error("tetrahedralize: the grid is too large for a mesh");
   std::vector<Vec3> points;
-  points.reserve(grid.values().size());
+  points.reserve(grid.size());
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) points.push_back({org.x + i * sp.x, org.y + j * sp.y, org.z + k * sp.z});
@@ -46,7 +46,8 @@ TetMesh tetrahedralize(const GridVolume& grid, int tets_per_cell) {
         if (tets_per_cell == 6) emit(kSix, 6);
         else emit((i + j + k) % 2 == 0 ? kFiveEven : kFiveOdd, 5);
       }
-  return TetMesh(std::move(points), std::move(tets), grid.values());
+  return TetMesh(std::move(points), std::move(tets),
+                 grid.visit([](auto v) { return std::vector<float>(v.begin(), v.end()); }));
 }
 
 }  // namespace vri

@@ -4,9 +4,14 @@
 
 namespace vri {
 
-GradientField::GradientField(const GridVolume& volume) : volume_(volume), g_(volume.values().size() * 3) {
-  const auto& n = volume.dims();
-  const Vec3 sp = volume.spacing();
+GradientField::GradientField(const GridVolume& volume) : volume_(volume), g_(volume.size() * 3) {
+  volume.visit([this](auto v) { fill(v.data()); });
+}
+
+template <class T>
+void GradientField::fill(const T* v) {
+  const auto& n = volume_.dims();
+  const Vec3 sp = volume_.spacing();
   std::size_t idx = 0;
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
@@ -16,7 +21,8 @@ GradientField::GradientField(const GridVolume& volume) : volume_(volume), g_(vol
           int lo[3] = {i, j, k}, hi[3] = {i, j, k};
           lo[a] = std::max(c[a] - 1, 0);
           hi[a] = std::min(c[a] + 1, n[a] - 1);
-          const double dv = volume.at(hi[0], hi[1], hi[2]) - volume.at(lo[0], lo[1], lo[2]);
+          const double dv = static_cast<float>(v[volume_.index(hi[0], hi[1], hi[2])]) -
+                            static_cast<float>(v[volume_.index(lo[0], lo[1], lo[2])]);
           g_[3 * idx + a] = static_cast<float>(dv / ((hi[a] - lo[a]) * sp[a]));
         }
       }

@@ -1,6 +1,7 @@
 #include "vri/volume/grid_volume.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string>
 
@@ -23,22 +24,68 @@ std::uint64_t GridVolume::checked_sample_count(std::array<std::int64_t, 3> dims)
   return n;
 }
 
-GridVolume::GridVolume(std::array<int, 3> dims, std::vector<float> values, Vec3 spacing,
-                       Vec3 origin)
+GridVolume::GridVolume(std::array<int, 3> dims, Samples values, Vec3 spacing, Vec3 origin)
     : dims_(dims), values_(std::move(values)) {
   const std::uint64_t n = checked_sample_count({dims[0], dims[1], dims[2]});
-  if (values_.size() != n)
-    throw Error("volume has " + std::to_string(values_.size()) + " samples, dims need " +
-                std::to_string(n));
+  if (size() != n)
+    throw Error("volume has " + std::to_string(size()) + " samples, dims need " + std::to_string(n));
   set_spacing(spacing);
   set_origin(origin);
-  const auto bad = std::find_if(values_.begin(), values_.end(),
-                                [](float v) { return !std::isfinite(v); });
-  if (bad != values_.end())
-    throw Error("volume sample " + std::to_string(bad - values_.begin()) + " is not finite");
-  const auto [lo, hi] = std::minmax_element(values_.begin(), values_.end());
-  min_ = *lo;
-  max_ = *hi;
+  visit([this](auto v) {
+    const auto bad = std::find_if(v.begin(), v.end(), [](auto x) { return !std::isfinite(static_cast<float>(x)); });
+    if (bad != v.end()) throw Error("volume sample " + std::to_string(bad - v.begin()) + " is not finite");
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    min_ = static_cast<float>(*lo);
+    max_ = static_cast<float>(*hi);
+  });
+}
+
+namespace {
+
+bool is_stored(ScalarType type) {
+  return type == ScalarType::UInt8 || type == ScalarType::UInt16 || type == ScalarType::Int16 ||
+         type == ScalarType::Float32;
+}
+
+// Storage of `count` samples of a stored type.
+GridVolume::Samples storage_for(ScalarType type, std::uint64_t count) {
+  switch (type) {
+    case ScalarType::UInt8: return std::vector<std::uint8_t>(count);
+    case ScalarType::UInt16: return std::vector<std::uint16_t>(count);
+    case ScalarType::Int16: return std::vector<std::int16_t>(count);
+    default: return std::vector<float>(count);
+  }
+}
+
+}  // namespace
+
+GridVolume::Samples GridVolume::decode(ScalarType type, Endian endian, std::uint64_t count,
+                                       const std::function<void(std::span<std::byte>)>& fill) {
+  const std::size_t size = scalar_type_size(type);
+  if (!is_stored(type)) {  // converted to float
+    std::vector<std::byte> bytes(count * size);
+    fill(bytes);
+    return decode_samples(bytes, type, endian, count);
+  }
+  Samples out = storage_for(type, count);
+  const auto bytes = std::visit([](auto& v) { return std::as_writable_bytes(std::span(v)); }, out);
+  fill(bytes);
+  if ((endian == Endian::Big) != (std::endian::native == std::endian::big))
+    for (std::size_t i = 0; i + size <= bytes.size(); i += size) std::reverse(bytes.begin() + i, bytes.begin() + i + size);
+  return out;
+}
+
+ScalarType GridVolume::type() const {
+  constexpr ScalarType types[] = {ScalarType::UInt8, ScalarType::UInt16, ScalarType::Int16, ScalarType::Float32};
+  return types[values_.index()];
+}
+
+std::size_t GridVolume::size() const {
+  return visit([](auto v) { return v.size(); });
+}
+
+std::size_t GridVolume::bytes() const {
+  return visit([](auto v) { return v.size_bytes(); });
 }
 
 void GridVolume::set_spacing(Vec3 spacing) {
@@ -61,25 +108,6 @@ Vec3 GridVolume::box_hi() const {
 
 double GridVolume::voxel_unit() const {
   return std::min({spacing_.x, spacing_.y, spacing_.z});
-}
-
-double GridVolume::sample(Vec3 p) const {
-  int c[3];
-  double f[3];
-  for (int a = 0; a < 3; ++a) {
-    const double u = std::clamp((p[a] - origin_[a]) / spacing_[a], 0.0, double(dims_[a] - 1));
-    c[a] = std::min(static_cast<int>(u), dims_[a] - 2);
-    f[a] = u - c[a];
-  }
-  const std::size_t sx = 1, sy = dims_[0], sz = std::size_t(dims_[0]) * dims_[1];
-  const float* v = values_.data() + index(c[0], c[1], c[2]);
-  const double c00 = v[0] + f[0] * (v[sx] - v[0]);
-  const double c10 = v[sy] + f[0] * (v[sy + sx] - v[sy]);
-  const double c01 = v[sz] + f[0] * (v[sz + sx] - v[sz]);
-  const double c11 = v[sz + sy] + f[0] * (v[sz + sy + sx] - v[sz + sy]);
-  const double c0 = c00 + f[1] * (c10 - c00);
-  const double c1 = c01 + f[1] * (c11 - c01);
-  return c0 + f[2] * (c1 - c0);
 }
 
 }  // namespace vri

@@ -1,6 +1,7 @@
 #include "vri/volume/macro_cells.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace vri {
 
@@ -9,28 +10,34 @@ namespace {
 // Macro cells along an axis of n points (n - 1 grid cells).
 int macro_count(int n) { return (n - 2) / MacroCells::kCells + 1; }
 
-// Reduces `in` (extent a x b x c, x fastest) along its first axis in windows of
-// kCells + 1 points that overlap by one, and writes the result transposed so
-// the next pass reduces the next axis: out has extent b x c x macro_count(a).
-void reduce_axis(const std::vector<float>& lo_in, const std::vector<float>& hi_in, std::array<int, 3> extent,
-                 std::vector<float>& lo_out, std::vector<float>& hi_out) {
-  const int a = extent[0], b = extent[1], c = extent[2], m = macro_count(a);
-  lo_out.assign(static_cast<std::size_t>(m) * b * c, 0);
-  hi_out.assign(lo_out.size(), 0);
-  for (int z = 0; z < c; ++z)
-    for (int y = 0; y < b; ++y) {
-      const std::size_t row = (static_cast<std::size_t>(z) * b + y) * a;
-      for (int i = 0; i < m; ++i) {
-        const int x0 = i * MacroCells::kCells, x1 = std::min(a - 1, x0 + MacroCells::kCells);
-        float lo = lo_in[row + x0], hi = hi_in[row + x0];
-        for (int x = x0 + 1; x <= x1; ++x) {
-          lo = std::min(lo, lo_in[row + x]);
-          hi = std::max(hi, hi_in[row + x]);
-        }
-        const std::size_t o = static_cast<std::size_t>(y) + static_cast<std::size_t>(b) * (z + static_cast<std::size_t>(c) * i);
-        lo_out[o] = lo;
-        hi_out[o] = hi;
+// The window of macro cell `i` along an axis of n points: points
+// [first, last], kCells + 1 of them (fewer at the far face); neighbours share one.
+int first(int i) { return i * MacroCells::kCells; }
+int last(int i, int n) { return std::min(n - 1, first(i) + MacroCells::kCells); }
+
+// The min and max over each macro cell's window in x and y of z-plane `z`:
+// lo/hi of mx * my entries; row_lo/row_hi (mx * ny) are scratch.
+template <class T>
+void reduce_plane(const T* plane, std::array<int, 3> dims, std::array<int, 3> m, std::vector<T>& row_lo,
+                  std::vector<T>& row_hi, std::vector<T>& lo, std::vector<T>& hi) {
+  const int nx = dims[0], ny = dims[1];
+  for (int y = 0; y < ny; ++y) {
+    const T* row = plane + static_cast<std::size_t>(y) * nx;
+    for (int i = 0; i < m[0]; ++i) {
+      const auto [l, h] = std::minmax_element(row + first(i), row + last(i, nx) + 1);
+      row_lo[static_cast<std::size_t>(y) * m[0] + i] = *l;
+      row_hi[static_cast<std::size_t>(y) * m[0] + i] = *h;
+    }
+  }
+  for (int j = 0; j < m[1]; ++j)
+    for (int i = 0; i < m[0]; ++i) {
+      T l = row_lo[static_cast<std::size_t>(first(j)) * m[0] + i], h = row_hi[static_cast<std::size_t>(first(j)) * m[0] + i];
+      for (int y = first(j) + 1; y <= last(j, ny); ++y) {
+        l = std::min(l, row_lo[static_cast<std::size_t>(y) * m[0] + i]);
+        h = std::max(h, row_hi[static_cast<std::size_t>(y) * m[0] + i]);
       }
+      lo[static_cast<std::size_t>(j) * m[0] + i] = l;
+      hi[static_cast<std::size_t>(j) * m[0] + i] = h;
     }
 }
 
@@ -39,17 +46,27 @@ void reduce_axis(const std::vector<float>& lo_in, const std::vector<float>& hi_i
 MacroCells::MacroCells(const GridVolume& volume)
     : volume_(volume),
       dims_{macro_count(volume.dims()[0]), macro_count(volume.dims()[1]), macro_count(volume.dims()[2])} {
-  // Three separable passes, x then y then z; each transposes (x, y, z) -> (y, z, x),
-  // so after three the layout is x fastest again.
-  std::array<int, 3> extent = volume.dims();
-  std::vector<float> lo, hi;
-  reduce_axis(volume.values(), volume.values(), extent, lo, hi);
-  extent = {extent[1], extent[2], dims_[0]};
-  reduce_axis(lo, hi, extent, lo_, hi_);
-  extent = {extent[1], extent[2], dims_[1]};
-  reduce_axis(lo_, hi_, extent, lo, hi);
-  lo_ = std::move(lo);
-  hi_ = std::move(hi);
+  // One z-plane at a time (the scratch is a few rows, not a copy of the
+  // volume): reduce it in x and y, then fold it into the one or two layers of
+  // macro cells whose z window holds it.
+  const std::size_t layer = static_cast<std::size_t>(dims_[0]) * dims_[1];
+  lo_.assign(layer * dims_[2], std::numeric_limits<float>::infinity());
+  hi_.assign(lo_.size(), -std::numeric_limits<float>::infinity());
+  volume.visit([&](auto values) {
+    using T = typename decltype(values)::value_type;
+    const auto& n = volume.dims();
+    const std::size_t plane = static_cast<std::size_t>(n[0]) * n[1];
+    std::vector<T> row_lo(static_cast<std::size_t>(dims_[0]) * n[1]), row_hi(row_lo.size()), lo(layer), hi(layer);
+    for (int z = 0; z < n[2]; ++z) {
+      reduce_plane(values.data() + plane * z, n, dims_, row_lo, row_hi, lo, hi);
+      for (int k = std::max(0, (z - 1) / kCells); k <= std::min(dims_[2] - 1, z / kCells); ++k) {
+        for (std::size_t c = 0; c < layer; ++c) {
+          lo_[layer * k + c] = std::min(lo_[layer * k + c], static_cast<float>(lo[c]));
+          hi_[layer * k + c] = std::max(hi_[layer * k + c], static_cast<float>(hi[c]));
+        }
+      }
+    }
+  });
 }
 
 }  // namespace vri

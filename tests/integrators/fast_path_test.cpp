@@ -11,6 +11,8 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <typeinfo>
+#include <vector>
 
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
@@ -230,6 +232,40 @@ TEST(FastPath, PacketsGiveTheBytesOfTheScalarFloatPath) {
                           std::string(name) + " " + file + " termination " + std::to_string(fast.termination));
       }
   }
+}
+
+// neghip's samples v mapped to a*v + b in storage type T, and its transfer
+// function mapped the same way, beside the float volume of those values.
+template <class T>
+void expect_storage_gives_float_bytes(double a, double b) {
+  const Scene scene = small("scenes/neghip.json", 32);
+  const std::vector<float> v = test::floats(scene.grid());
+  std::vector<T> typed(v.size());
+  std::vector<float> same(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) same[i] = static_cast<float>(typed[i] = static_cast<T>(a * v[i] + b));
+  const GridVolume stored(scene.grid().dims(), std::move(typed)), floats(scene.grid().dims(), std::move(same));
+  ASSERT_EQ(stored.bytes(), stored.size() * sizeof(T));
+  std::vector<ControlPoint> points = scene.transfer_function.points();
+  for (ControlPoint& p : points) p.s = a * p.s + b;
+  const TransferFunction tf(points);
+  const Camera camera(scene.camera);
+  for (const char* name : {"riemann", "preint1"}) {
+    const MethodSpec spec{.name = name, .step = 1};
+    const auto on_stored = make_integrator(spec, stored, tf), on_floats = make_integrator(spec, floats, tf);
+    const Image image = render(camera, *on_stored, {.threads = 1});
+    EXPECT_GT(max_difference(image, Image(camera.width(), camera.height())), 0.05) << name;  // not blank
+    expect_same_bytes(image, render(camera, *on_floats, {.threads = 1}), name + std::string(" ") + typeid(T).name());
+    Image single(camera.width(), camera.height());  // preint1: its packets against its scalar march
+    for (int y = 0; y < camera.height(); ++y)
+      for (int x = 0; x < camera.width(); ++x) single.set(x, y, on_stored->integrate(camera.ray(x, y)));
+    expect_same_bytes(image, single, name + std::string(" ray by ray ") + typeid(T).name());
+  }
+}
+
+TEST(FastPath, EveryStorageTypeGivesTheBytesOfTheFloatVolume) {
+  expect_storage_gives_float_bytes<std::uint8_t>(1, 0);
+  expect_storage_gives_float_bytes<std::uint16_t>(256, 3);      // both bytes of each sample in use
+  expect_storage_gives_float_bytes<std::int16_t>(250, -32000);  // negative and positive samples
 }
 
 TEST(FastPath, SameBytesWithAnyThreadCount) {

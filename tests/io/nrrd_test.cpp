@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <vector>
+
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
 #include "vri/volume/builtin_volumes.hpp"
@@ -11,7 +14,7 @@ namespace {
 
 void expect_same(const GridVolume& a, const GridVolume& b) {
   EXPECT_EQ(a.dims(), b.dims());
-  EXPECT_EQ(a.values(), b.values());
+  EXPECT_EQ(test::floats(a), test::floats(b));
   for (int i = 0; i < 3; ++i) {
     EXPECT_DOUBLE_EQ(a.spacing()[i], b.spacing()[i]);
     EXPECT_DOUBLE_EQ(a.origin()[i], b.origin()[i]);
@@ -30,6 +33,44 @@ TEST(Nrrd, RoundTripsAttachedAndDetachedRawAndGzip) {
     }
 }
 
+// A typed volume comes back in its own type, raw or gzip, attached or detached.
+TEST(Nrrd, RoundTripsTheStoredType) {
+  test::TempDir dir;
+  std::vector<std::int16_t> v(4 * 3 * 2);
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<std::int16_t>(1000 * (int(i) - 12) + 7);
+  const GridVolume vol({4, 3, 2}, v);
+  for (auto enc : {NrrdEncoding::Raw, NrrdEncoding::Gzip})
+    for (const char* name : {"t.nrrd", "t.nhdr"}) {
+      write_nrrd(dir / name, vol, enc);
+      const GridVolume back = read_nrrd(dir / name);
+      EXPECT_EQ(back.type(), ScalarType::Int16) << name;
+      expect_same(back, vol);
+    }
+}
+
+// gzip inflates into the volume, past a byte skip; a line skip before raw data.
+TEST(Nrrd, GzipByteSkipAndLineSkip) {
+  test::TempDir dir;
+  std::vector<std::uint8_t> bytes(20);
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<std::uint8_t>(i);
+  write_nrrd(dir / "g.nhdr", GridVolume({2, 2, 5}, bytes), NrrdEncoding::Gzip);  // g.raw.gz: bytes 0 .. 19
+  const std::string head = "NRRD0004\ntype: uint16\ndimension: 3\nencoding: gzip\ndata file: g.raw.gz\n";
+  test::write_text(dir / "s.nhdr", head + "sizes: 2 2 2\nbyte skip: 4\n");
+  const GridVolume skipped = read_nrrd(dir / "s.nhdr");
+  EXPECT_EQ(skipped.type(), ScalarType::UInt16);
+  EXPECT_EQ(skipped.value(0), 5 * 256 + 4);  // bytes 4 5, little-endian
+  EXPECT_EQ(skipped.value(7), 19 * 256 + 18);
+  test::write_text(dir / "m.nhdr", head + "sizes: 2 2 2\n");
+  EXPECT_THROW(read_nrrd(dir / "m.nhdr"), Error);  // 20 bytes where 16 are needed
+  test::write_text(dir / "n.nhdr", head + "sizes: 2 2 3\n");
+  EXPECT_THROW(read_nrrd(dir / "n.nhdr"), Error);  // 20 bytes where 24 are needed
+  test::write_text(dir / "l.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n"
+                                   "line skip: 2\n\nfirst\nsecond\nABCDEFGH");
+  const GridVolume lines = read_nrrd(dir / "l.nrrd");
+  EXPECT_EQ(lines.type(), ScalarType::UInt8);
+  EXPECT_EQ(lines.value(7), 'H');
+}
+
 TEST(Nrrd, ReadsHandWrittenHeaders) {
   test::TempDir dir;
   // big-endian uint16, space directions (spacing 2, 3, 4), a byte skip and a comment
@@ -46,7 +87,8 @@ TEST(Nrrd, ReadsHandWrittenHeaders) {
   }
   test::write_bytes(dir / "h.nrrd", bytes);
   const auto vol = read_nrrd(dir / "h.nrrd");
-  EXPECT_FLOAT_EQ(vol.at(1, 1, 1), 256 + 7);
+  EXPECT_EQ(vol.type(), ScalarType::UInt16);
+  EXPECT_FLOAT_EQ(vol.at(1, 1, 1), 256 + 7);  // swapped in place
   EXPECT_DOUBLE_EQ(vol.spacing().y, 3);
   EXPECT_DOUBLE_EQ(vol.spacing().z, 4);
   EXPECT_DOUBLE_EQ(vol.origin().z, 3);
@@ -58,8 +100,10 @@ TEST(Nrrd, ReadsHandWrittenHeaders) {
 TEST(Nrrd, BundledEngineDecodes) {
   const auto vol = read_nrrd(test::source_path("data/engine.nrrd"));
   EXPECT_EQ(vol.dims(), (std::array<int, 3>{256, 256, 128}));
+  EXPECT_EQ(vol.type(), ScalarType::UInt8);
+  EXPECT_EQ(vol.bytes(), 256u * 256 * 128);  // a byte a sample
   double sum = 0;
-  for (float v : vol.values()) sum += v;
+  for (float v : test::floats(vol)) sum += v;
   EXPECT_EQ(sum, 187475057.0);  // the sum of the raw file listed in data/PROVENANCE.md
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <utility>
 
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
@@ -36,10 +37,30 @@ TEST(RawVolume, ReadsEveryTypeInBothByteOrders) {
   EXPECT_FLOAT_EQ(vol.at(0, 1, 0), 2);
 }
 
+// uint8, uint16 and int16 stay in their type (1 or 2 bytes a sample); the
+// others become float.
+TEST(RawVolume, KeepsTheFilesTypeWhereItCan) {
+  test::TempDir dir;
+  test::write_bytes(dir / "e.raw", std::vector<unsigned char>(32, 1));
+  const std::pair<ScalarType, ScalarType> kept[] = {{ScalarType::UInt8, ScalarType::UInt8},
+                                                    {ScalarType::UInt16, ScalarType::UInt16},
+                                                    {ScalarType::Int16, ScalarType::Int16},
+                                                    {ScalarType::Float32, ScalarType::Float32},
+                                                    {ScalarType::Int32, ScalarType::Float32}};
+  for (const auto& [file, stored] : kept) {
+    const std::int64_t n = static_cast<std::int64_t>(32 / scalar_type_size(file));
+    const auto vol = read_raw_volume(dir / "e.raw", {2, 2, n / 4}, file);
+    EXPECT_EQ(vol.type(), stored) << scalar_type_name(file);
+    EXPECT_EQ(vol.bytes(), std::size_t(n) * scalar_type_size(stored)) << scalar_type_name(file);
+  }
+  EXPECT_EQ(read_raw_volume(dir / "e.raw", {2, 2, 4}, ScalarType::UInt16).value(7), 257);
+  EXPECT_EQ(read_raw_volume(dir / "e.raw", {2, 2, 2}, ScalarType::Int32).value(7), 0x01010101);
+}
+
 TEST(RawVolume, BundledNeghipHasItsKnownChecksum) {
   const auto vol = read_raw_volume(test::source_path("data/neghip_64x64x64_uint8.raw"), {64, 64, 64}, ScalarType::UInt8);
   double sum = 0;
-  for (float v : vol.values()) sum += v;
+  for (float v : test::floats(vol)) sum += v;
   EXPECT_EQ(sum, 4824177.0);  // numpy: fromfile(...).sum()
 }
 

@@ -2,7 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+#include <utility>
+
 #include "test_support.hpp"
+#include "vri/volume/float_sampler.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri {
@@ -37,6 +42,67 @@ TEST(GridVolume, MinMax) {
   const auto vol = test::volume_from({3, 4, 5}, [](double x, double y, double z) { return x - y * z; });
   EXPECT_FLOAT_EQ(vol.min_value(), -12);
   EXPECT_FLOAT_EQ(vol.max_value(), 2);
+}
+
+// A volume of storage type T with random samples, and the float volume of the same values.
+template <class T>
+std::pair<GridVolume, GridVolume> typed_and_float(std::array<int, 3> dims, int lo, int hi) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> u(lo, hi);
+  std::vector<T> typed(static_cast<std::size_t>(dims[0]) * dims[1] * dims[2]);
+  std::vector<float> same(typed.size());
+  for (std::size_t i = 0; i < typed.size(); ++i) same[i] = typed[i] = static_cast<T>(u(rng));
+  return {GridVolume(dims, std::move(typed), {0.5, 1, 2}, {1, -2, 3}), GridVolume(dims, std::move(same), {0.5, 1, 2}, {1, -2, 3})};
+}
+
+template <class T>
+void expect_samples_as_float(ScalarType type, int lo, int hi) {
+  const auto [typed, floats] = typed_and_float<T>({7, 5, 6}, lo, hi);
+  EXPECT_EQ(typed.type(), type);
+  EXPECT_EQ(typed.bytes(), 7u * 5 * 6 * sizeof(T));
+  EXPECT_EQ(floats.bytes(), 7u * 5 * 6 * sizeof(float));
+  EXPECT_EQ(typed.min_value(), floats.min_value());
+  EXPECT_EQ(typed.max_value(), floats.max_value());
+  EXPECT_EQ(test::floats(typed), test::floats(floats));
+  EXPECT_EQ(typed.at(6, 4, 5), floats.at(6, 4, 5));
+  const FloatSampler sampler(typed);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> x(0, 4), y(-3, 3), z(2, 14);  // beyond the box too: clamped
+  for (int n = 0; n < 500; ++n) {
+    const Vec3 p{x(rng), y(rng), z(rng)};
+    ASSERT_EQ(typed.sample(p), floats.sample(p)) << n;
+    const Vec3 u = sampler.grid(p);
+    const float a = typed.visit([&](auto v) { return sampler.at(v.data(), u); });
+    const float b = floats.visit([&](auto v) { return sampler.at(v.data(), u); });
+    ASSERT_EQ(a, b) << n;
+  }
+}
+
+TEST(GridVolume, EachStorageTypeSamplesAsTheFloatVolume) {
+  expect_samples_as_float<std::uint8_t>(ScalarType::UInt8, 0, 255);
+  expect_samples_as_float<std::uint16_t>(ScalarType::UInt16, 0, 65535);
+  expect_samples_as_float<std::int16_t>(ScalarType::Int16, -32768, 32767);
+  expect_samples_as_float<float>(ScalarType::Float32, -1000, 1000);
+}
+
+TEST(GridVolume, DecodeKeepsTheStoredTypesAndSwapsInPlace) {
+  std::vector<std::byte> bytes(16);
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = std::byte(i + 1);  // 01 02 03 ... 10
+  const auto from = [&](std::span<std::byte> out) { std::copy(bytes.begin(), bytes.begin() + out.size(), out.begin()); };
+  const GridVolume u16({2, 2, 2}, GridVolume::decode(ScalarType::UInt16, Endian::Big, 8, from));
+  EXPECT_EQ(u16.type(), ScalarType::UInt16);
+  EXPECT_EQ(u16.value(0), 0x0102);
+  EXPECT_EQ(u16.value(7), 0x0f10);
+  const GridVolume i16({2, 2, 2}, GridVolume::decode(ScalarType::Int16, Endian::Little, 8, from));
+  EXPECT_EQ(i16.type(), ScalarType::Int16);
+  EXPECT_EQ(i16.value(1), 0x0403);
+  const GridVolume u8({2, 2, 2}, GridVolume::decode(ScalarType::UInt8, Endian::Big, 8, from));
+  EXPECT_EQ(u8.type(), ScalarType::UInt8);
+  EXPECT_EQ(u8.value(7), 8);
+  EXPECT_EQ(u8.bytes(), 8u);
+  const GridVolume i8({2, 2, 2}, GridVolume::decode(ScalarType::Int8, Endian::Little, 8, from));
+  EXPECT_EQ(i8.type(), ScalarType::Float32);  // converted
+  EXPECT_EQ(i8.value(7), 8);
 }
 
 TEST(GridVolume, RejectsBadConstruction) {

@@ -14,26 +14,51 @@ namespace vri {
 namespace {
 
 // Every macro cell's range is the min and max over its corner points 8I .. 8I + 8,
-// by brute force, on dims that are not multiples of 8.
+// by brute force.
+void expect_brute_force_ranges(const GridVolume& volume) {
+  const MacroCells cells(volume);
+  const auto& n = volume.dims();
+  for (int a = 0; a < 3; ++a) ASSERT_EQ(cells.dims()[a], (n[a] - 2) / 8 + 1);
+  for (int K = 0; K < cells.dims()[2]; ++K)
+    for (int J = 0; J < cells.dims()[1]; ++J)
+      for (int I = 0; I < cells.dims()[0]; ++I) {
+        float lo = 1e9f, hi = -1e9f;
+        for (int k = 8 * K; k <= std::min(n[2] - 1, 8 * K + 8); ++k)
+          for (int j = 8 * J; j <= std::min(n[1] - 1, 8 * J + 8); ++j)
+            for (int i = 8 * I; i <= std::min(n[0] - 1, 8 * I + 8); ++i) {
+              lo = std::min(lo, volume.at(i, j, k));
+              hi = std::max(hi, volume.at(i, j, k));
+            }
+        ASSERT_EQ(cells.min(cells.index(I, J, K)), lo) << I << " " << J << " " << K;
+        ASSERT_EQ(cells.max(cells.index(I, J, K)), hi) << I << " " << J << " " << K;
+      }
+}
+
+// On dims that are not multiples of 8, and that are (one point more than a
+// multiple: the last macro cell is one cell thin).
 TEST(MacroCells, RangesAreTheMinMaxOfTheirPoints) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-5, 5);
   const GridVolume volume = test::volume_from({19, 9, 26}, [&](double, double, double) { return u(rng); });
-  const MacroCells cells(volume);
-  ASSERT_EQ(cells.dims(), (std::array<int, 3>{3, 1, 4}));
-  for (int K = 0; K < 4; ++K)
-    for (int J = 0; J < 1; ++J)
-      for (int I = 0; I < 3; ++I) {
-        float lo = 1e9f, hi = -1e9f;
-        for (int k = 8 * K; k <= std::min(25, 8 * K + 8); ++k)
-          for (int j = 8 * J; j <= std::min(8, 8 * J + 8); ++j)
-            for (int i = 8 * I; i <= std::min(18, 8 * I + 8); ++i) {
-              lo = std::min(lo, volume.at(i, j, k));
-              hi = std::max(hi, volume.at(i, j, k));
-            }
-        EXPECT_EQ(cells.min(cells.index(I, J, K)), lo) << I << J << K;
-        EXPECT_EQ(cells.max(cells.index(I, J, K)), hi) << I << J << K;
-      }
+  EXPECT_EQ(MacroCells(volume).dims(), (std::array<int, 3>{3, 1, 4}));
+  expect_brute_force_ranges(volume);
+  expect_brute_force_ranges(test::volume_from({17, 25, 10}, [&](double, double, double) { return u(rng); }));
+}
+
+// The same on each storage type, random samples over its whole range.
+template <class T>
+GridVolume random_volume(std::array<int, 3> dims, int lo, int hi, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> u(lo, hi);
+  std::vector<T> v(static_cast<std::size_t>(dims[0]) * dims[1] * dims[2]);
+  for (T& x : v) x = static_cast<T>(u(rng));
+  return GridVolume(dims, std::move(v));
+}
+
+TEST(MacroCells, RangesOnEachStorageType) {
+  expect_brute_force_ranges(random_volume<std::uint8_t>({21, 18, 30}, 0, 255, 1));
+  expect_brute_force_ranges(random_volume<std::uint16_t>({9, 33, 17}, 0, 65535, 2));
+  expect_brute_force_ranges(random_volume<std::int16_t>({26, 11, 41}, -32768, 32767, 3));
 }
 
 // tau: 0 below 10, up to 1 at 20, down to 0 at 30, 0 above.

@@ -35,6 +35,10 @@ class RiemannIntegrator final : public Integrator {
   std::string_view name() const override { return "riemann"; }
 
  private:
+  // The march on the volume's typed samples (one type dispatch per ray).
+  template <class Value>
+  Rgba march(const Ray& ray, const Value* values) const;
+
   const GridVolume& volume_;
   const TransferFunction& tf_;
   double h_;  // world units

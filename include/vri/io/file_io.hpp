@@ -1,6 +1,7 @@
 #pragma once
-// Whole-file reads, and writes that never leave a partial file behind.
+// Whole-file and ranged reads, and writes that never leave a partial file behind.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <span>
 #include <vector>
@@ -9,6 +10,13 @@ namespace vri {
 
 // Reads the whole file; throws vri::Error naming the path if it cannot.
 std::vector<std::byte> read_file(const std::filesystem::path& path);
+
+// The file's size in bytes; throws vri::Error naming the path if it has none.
+std::uint64_t checked_file_size(const std::filesystem::path& path);
+
+// Reads out.size() bytes from `offset` on straight into `out` (a volume's own
+// storage: no file-sized copy beside it); throws vri::Error if it cannot.
+void read_file_range(const std::filesystem::path& path, std::uint64_t offset, std::span<std::byte> out);
 
 // Writes to a temporary file beside `path`, then renames it into place, so a
 // failure never leaves a truncated output. Throws vri::Error on failure.

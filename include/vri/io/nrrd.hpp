@@ -14,7 +14,7 @@ namespace vri {
 GridVolume read_nrrd(const std::filesystem::path& path);
 
 enum class NrrdEncoding { Raw, Gzip };
-// Writes float32 samples. With a ".nhdr" path the data goes to a detached file
+// Writes the samples in their stored type (uchar, ushort, short or float). With a ".nhdr" path the data goes to a detached file
 // beside it (".raw" or ".raw.gz").
 void write_nrrd(const std::filesystem::path& path, const GridVolume& volume,
                 NrrdEncoding encoding = NrrdEncoding::Raw);

@@ -7,7 +7,9 @@
 // eight corners are read through precomputed strides and interpolated in
 // float. The value differs from GridVolume::sample's by a few float roundings
 // of the corner values (under 1e-6 of the largest |value|): EmptySpace's
-// margin covers it, so skipping stays exact on this path too.
+// margin covers it, so skipping stays exact on this path too. It reads the
+// volume's typed samples (GridVolume::visit, once per ray or packet), each
+// corner converted to float exactly.
 #include <algorithm>
 #include <cstddef>
 
@@ -19,8 +21,7 @@ namespace vri {
 class FloatSampler {
  public:
   explicit FloatSampler(const GridVolume& volume)
-      : values_(volume.values().data()),
-        sy_(static_cast<std::size_t>(volume.dims()[0])),
+      : sy_(static_cast<std::size_t>(volume.dims()[0])),
         sz_(static_cast<std::size_t>(volume.dims()[0]) * volume.dims()[1]),
         origin_(volume.origin()),
         inverse_{1 / volume.spacing().x, 1 / volume.spacing().y, 1 / volume.spacing().z} {
@@ -36,8 +37,10 @@ class FloatSampler {
   }
   Vec3 grid_step(Vec3 d) const { return {d.x * inverse_.x, d.y * inverse_.y, d.z * inverse_.z}; }
 
-  // Trilinear value at grid position u, clamped onto the box as GridVolume::sample.
-  float at(Vec3 u) const {
+  // Trilinear value at grid position u of the volume's samples `values`,
+  // clamped onto the box as GridVolume::sample.
+  template <class T>
+  float at(const T* values, Vec3 u) const {
     int c[3];
     float f[3];
     for (int a = 0; a < 3; ++a) {
@@ -45,25 +48,23 @@ class FloatSampler {
       c[a] = std::min(static_cast<int>(x), last_cell_[a]);
       f[a] = static_cast<float>(x - c[a]);
     }
-    const float* v = values_ + (static_cast<std::size_t>(c[0]) + sy_ * c[1] + sz_ * c[2]);
+    const auto v = corners_as_float(values + (static_cast<std::size_t>(c[0]) + sy_ * c[1] + sz_ * c[2]), sy_, sz_);
     const float c00 = v[0] + f[0] * (v[1] - v[0]);
-    const float c10 = v[sy_] + f[0] * (v[sy_ + 1] - v[sy_]);
-    const float c01 = v[sz_] + f[0] * (v[sz_ + 1] - v[sz_]);
-    const float c11 = v[sz_ + sy_] + f[0] * (v[sz_ + sy_ + 1] - v[sz_ + sy_]);
+    const float c10 = v[2] + f[0] * (v[3] - v[2]);
+    const float c01 = v[4] + f[0] * (v[5] - v[4]);
+    const float c11 = v[6] + f[0] * (v[7] - v[6]);
     const float c0 = c00 + f[1] * (c10 - c00);
     const float c1 = c01 + f[1] * (c11 - c01);
     return c0 + f[2] * (c1 - c0);
   }
 
   // The layout `at` reads, for the ray packets (src/integrators/float_packet.cpp).
-  const float* values() const { return values_; }
   std::size_t stride_y() const { return sy_; }
   std::size_t stride_z() const { return sz_; }
   double top(int axis) const { return top_[axis]; }
   int last_cell(int axis) const { return last_cell_[axis]; }
 
  private:
-  const float* values_;
   std::size_t sy_, sz_;
   Vec3 origin_, inverse_;
   double top_[3];

@@ -1,7 +1,9 @@
 #pragma once
 // GradientField (SPEC §5): the gradient at each grid point by central
 // differences (one-sided on the border) divided by the spacing, and between
-// grid points the trilinear interpolation of those vectors.
+// grid points the trilinear interpolation of those vectors. Stored as 3
+// floats per grid point whatever the volume's sample type (docs/PERFORMANCE.md,
+// "Peak memory": lighting's memory is out of issue 8's goal).
 #include <array>
 #include <vector>
 
@@ -23,6 +25,9 @@ class GradientField {
   std::array<double, 8> cell_corners(int axis, std::array<int, 3> cell) const;
 
  private:
+  template <class T>
+  void fill(const T* values);  // central differences of the typed samples
+
   const GridVolume& volume_;
   std::vector<float> g_;  // 3 floats per grid point, x fastest
 };

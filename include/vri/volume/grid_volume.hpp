@@ -1,12 +1,21 @@
 #pragma once
 // GridVolume: a scalar field on nx*ny*nz points, x fastest, trilinear between
-// samples; the medium is the closed box B of SPEC §1.
+// samples; the medium is the closed box B of SPEC §1. The samples keep the
+// file's own type for uint8, uint16 and int16 (1 or 2 bytes a sample: a 512³
+// uint8 volume holds 128 MiB, not 512), float otherwise; every conversion to
+// float is exact, so each reader gets the values a float volume would hold.
+// Hot loops dispatch on the type once (visit) and read typed samples.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <span>
+#include <variant>
 #include <vector>
 
 #include "vri/core/vec3.hpp"
+#include "vri/volume/scalar_type.hpp"
 
 namespace vri {
 
@@ -16,13 +25,23 @@ class GridVolume {
   // refused before any allocation so absurd dims fail cleanly.
   static constexpr std::uint64_t kMaxSamples = std::uint64_t{1} << 30;
 
-  // Checks dims >= 2, values.size() == nx*ny*nz, every value finite,
+  // The storage types, x fastest.
+  using Samples = std::variant<std::vector<std::uint8_t>, std::vector<std::uint16_t>,
+                               std::vector<std::int16_t>, std::vector<float>>;
+
+  // Checks dims >= 2, the sample count == nx*ny*nz, every value finite,
   // spacing > 0; throws vri::Error otherwise.
-  GridVolume(std::array<int, 3> dims, std::vector<float> values, Vec3 spacing = {1, 1, 1},
-             Vec3 origin = {0, 0, 0});
+  GridVolume(std::array<int, 3> dims, Samples values, Vec3 spacing = {1, 1, 1}, Vec3 origin = {0, 0, 0});
 
   // Throws vri::Error unless dims describe an acceptable volume; returns the sample count.
   static std::uint64_t checked_sample_count(std::array<std::int64_t, 3> dims);
+
+  // `count` samples of a file's `type`, decoded straight into the storage:
+  // `fill` writes exactly count * scalar_type_size(type) bytes into the span it
+  // is given, which is the storage itself where the type is kept (byte
+  // order swapped in place after), else a buffer converted to float.
+  static Samples decode(ScalarType type, Endian endian, std::uint64_t count,
+                        const std::function<void(std::span<std::byte>)>& fill);
 
   const std::array<int, 3>& dims() const { return dims_; }
   Vec3 spacing() const { return spacing_; }
@@ -30,13 +49,28 @@ class GridVolume {
   void set_spacing(Vec3 spacing);
   void set_origin(Vec3 origin);
 
-  const std::vector<float>& values() const { return values_; }
+  // The storage type (UInt8, UInt16, Int16 or Float32), the sample count and
+  // the bytes the samples take.
+  ScalarType type() const;
+  std::size_t size() const;
+  std::size_t bytes() const;
+
+  // f(std::span<const T>) with the samples as stored.
+  template <class F>
+  decltype(auto) visit(F&& f) const {
+    return std::visit([&](const auto& v) -> decltype(auto) { return f(std::span(v)); }, values_);
+  }
+
   std::size_t index(int i, int j, int k) const {
     return static_cast<std::size_t>(i) +
            static_cast<std::size_t>(dims_[0]) *
                (static_cast<std::size_t>(j) + static_cast<std::size_t>(dims_[1]) * k);
   }
-  float at(int i, int j, int k) const { return values_[index(i, j, k)]; }
+  // One sample as float (a dispatch each: not for hot loops).
+  float value(std::size_t index) const {
+    return std::visit([index](const auto& v) { return static_cast<float>(v[index]); }, values_);
+  }
+  float at(int i, int j, int k) const { return value(index(i, j, k)); }
 
   float min_value() const { return min_; }
   float max_value() const { return max_; }
@@ -47,13 +81,46 @@ class GridVolume {
   double voxel_unit() const;
 
   // Trilinear value at a world point; points outside B are clamped onto it.
-  double sample(Vec3 p) const;
+  double sample(Vec3 p) const {
+    return visit([&](auto v) { return sample(v.data(), p); });
+  }
+  // The same on the typed samples (visit's span data), for loops that dispatched once.
+  template <class T>
+  double sample(const T* values, Vec3 p) const;
 
  private:
   std::array<int, 3> dims_;
-  std::vector<float> values_;
+  Samples values_;
   Vec3 spacing_, origin_;
   float min_ = 0, max_ = 0;
 };
+
+// The 8 corners of the cell whose first corner is `t` (strides 1, sy, sz), in
+// float as a float volume holds them, x fastest: c000 c100 c010 c110 c001 ...
+template <class T>
+std::array<float, 8> corners_as_float(const T* t, std::size_t sy, std::size_t sz) {
+  return {float(t[0]),  float(t[1]),      float(t[sy]),      float(t[sy + 1]),
+          float(t[sz]), float(t[sz + 1]), float(t[sz + sy]), float(t[sz + sy + 1])};
+}
+
+template <class T>
+double GridVolume::sample(const T* values, Vec3 p) const {
+  int c[3];
+  double f[3];
+  for (int a = 0; a < 3; ++a) {
+    const double u = std::clamp((p[a] - origin_[a]) / spacing_[a], 0.0, double(dims_[a] - 1));
+    c[a] = std::min(static_cast<int>(u), dims_[a] - 2);
+    f[a] = u - c[a];
+  }
+  const std::size_t sy = dims_[0], sz = std::size_t(dims_[0]) * dims_[1];
+  const auto v = corners_as_float(values + index(c[0], c[1], c[2]), sy, sz);  // differences below in float
+  const double c00 = v[0] + f[0] * (v[1] - v[0]);
+  const double c10 = v[2] + f[0] * (v[3] - v[2]);
+  const double c01 = v[4] + f[0] * (v[5] - v[4]);
+  const double c11 = v[6] + f[0] * (v[7] - v[6]);
+  const double c0 = c00 + f[1] * (c10 - c00);
+  const double c1 = c01 + f[1] * (c11 - c01);
+  return c0 + f[2] * (c1 - c0);
+}
 
 }  // namespace vri
