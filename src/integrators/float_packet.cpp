@@ -149,23 +149,36 @@ VRI_AVX2 __m256 lerp_pair(const std::int16_t* base, const int* index, __m256 f) 
               _mm256_cvtepi32_ps(_mm256_srai_epi32(p, 16)), f);
 }
 
+// FloatSampler::cell of the 8 lanes' samples k: each lane's first corner
+// and the fractions.
+struct Cells8 {
+  __m256i index;
+  __m256 fx, fy, fz;
+};
+template <class Lanes>
+VRI_AVX2 Cells8 cells8(const FloatSampler& sampler, const Lanes& L, __m256i k) {
+  __m256i cx, cy, cz;
+  Cells8 c;
+  cell_axis(L.ux, L.dx, k, sampler.top(0), sampler.last_cell(0), cx, c.fx);
+  cell_axis(L.uy, L.dy, k, sampler.top(1), sampler.last_cell(1), cy, c.fy);
+  cell_axis(L.uz, L.dz, k, sampler.top(2), sampler.last_cell(2), cz, c.fz);
+  const int sy = static_cast<int>(sampler.stride_y()), sz = static_cast<int>(sampler.stride_z());
+  c.index = _mm256_add_epi32(cx, _mm256_add_epi32(_mm256_mullo_epi32(cy, _mm256_set1_epi32(sy)),
+                                                  _mm256_mullo_epi32(cz, _mm256_set1_epi32(sz))));
+  return c;
+}
+
 // FloatSampler::at of the 8 lanes' samples k.
 template <class Lanes, class T>
-VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const T* v, const Lanes& L, __m256i k) {
-  __m256i cx, cy, cz;
-  __m256 fx, fy, fz;
-  cell_axis(L.ux, L.dx, k, sampler.top(0), sampler.last_cell(0), cx, fx);
-  cell_axis(L.uy, L.dy, k, sampler.top(1), sampler.last_cell(1), cy, fy);
-  cell_axis(L.uz, L.dz, k, sampler.top(2), sampler.last_cell(2), cz, fz);
+VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const T* v, const Lanes& L, __m256i k, Cells8* cells = nullptr) {
+  const Cells8 c = cells8(sampler, L, k);
+  if (cells) *cells = c;
   const std::size_t sy = sampler.stride_y(), sz = sampler.stride_z();
-  const __m256i index =
-      _mm256_add_epi32(cx, _mm256_add_epi32(_mm256_mullo_epi32(cy, _mm256_set1_epi32(static_cast<int>(sy))),
-                                            _mm256_mullo_epi32(cz, _mm256_set1_epi32(static_cast<int>(sz)))));
   alignas(32) int at[kPacket];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(at), index);
-  const __m256 c00 = lerp_pair(v, at, fx), c10 = lerp_pair(v + sy, at, fx);
-  const __m256 c01 = lerp_pair(v + sz, at, fx), c11 = lerp_pair(v + sz + sy, at, fx);
-  return lerp(lerp(c00, c10, fy), lerp(c01, c11, fy), fz);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(at), c.index);
+  const __m256 c00 = lerp_pair(v, at, c.fx), c10 = lerp_pair(v + sy, at, c.fx);
+  const __m256 c01 = lerp_pair(v + sz, at, c.fx), c11 = lerp_pair(v + sz + sy, at, c.fx);
+  return lerp(lerp(c00, c10, c.fy), lerp(c01, c11, c.fy), c.fz);
 }
 
 // FloatAxis::place of 8 scalars: entry i and weight w on the table axis.
@@ -253,6 +266,7 @@ struct RiemannLanes {
   alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0, grid units
   alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
   alignas(32) double t0[kPacket], t1[kPacket];                // the clipped ray
+  alignas(32) float d[3][kPacket];                            // the direction, for lighting
   alignas(32) int k[kPacket], stop[kPacket];
   alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];  // composited so far
   long long n[kPacket];
@@ -298,6 +312,59 @@ VRI_AVX2 __m256 exp_neg8(__m256 x) {
   const __m256 e = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(p, _mm256_mul_ps(r, r)), r), _mm256_set1_ps(1.0f));
   const __m256i bits = _mm256_slli_epi32(_mm256_add_epi32(_mm256_cvttps_epi32(n), _mm256_set1_epi32(127)), 23);
   return _mm256_mul_ps(e, _mm256_castsi256_ps(bits));
+}
+
+// log_pos (float_math.hpp) on 8 lanes, the same operations in the same order
+// (max with the bound first, as std::max(x, bound) keeps x when it is NaN).
+VRI_AVX2 __m256 log8(__m256 x) {
+  using namespace log_poly;
+  const __m256i bits = _mm256_castps_si256(_mm256_max_ps(_mm256_set1_ps(kMin), x));
+  __m256 e = _mm256_cvtepi32_ps(_mm256_sub_epi32(_mm256_srli_epi32(bits, 23), _mm256_set1_epi32(126)));
+  __m256 m = _mm256_castsi256_ps(_mm256_or_si256(_mm256_and_si256(bits, _mm256_set1_epi32(static_cast<int>(0x807fffffu))),
+                                                 _mm256_set1_epi32(0x3f000000)));
+  const __m256 one = _mm256_set1_ps(1.0f), low = _mm256_cmp_ps(m, _mm256_set1_ps(kSqrtHalf), _CMP_LT_OQ);
+  e = _mm256_blendv_ps(e, _mm256_sub_ps(e, one), low);
+  m = _mm256_blendv_ps(_mm256_sub_ps(m, one), _mm256_sub_ps(_mm256_add_ps(m, m), one), low);
+  const __m256 z = _mm256_mul_ps(m, m);
+  __m256 y = _mm256_set1_ps(kQ[0]);
+  for (int i = 1; i < 9; ++i) y = _mm256_add_ps(_mm256_mul_ps(y, m), _mm256_set1_ps(kQ[i]));
+  y = _mm256_mul_ps(_mm256_mul_ps(y, m), z);
+  y = _mm256_add_ps(y, _mm256_mul_ps(e, _mm256_set1_ps(exp_poly::kLn2Lo)));
+  y = _mm256_sub_ps(y, _mm256_mul_ps(_mm256_set1_ps(0.5f), z));
+  return _mm256_add_ps(_mm256_add_ps(m, y), _mm256_mul_ps(e, _mm256_set1_ps(exp_poly::kLn2Hi)));
+}
+
+// FloatShading::gradient of the 8 lanes' cells: component a gathered at the
+// 8 corners of each lane's cell (3 floats a grid point), interpolated as
+// FloatSampler::interpolate does.
+VRI_AVX2 void gradient8(const FloatShading& shading, const Cells8& c, __m256 g[3]) {
+  const __m256i first = _mm256_mullo_epi32(c.index, _mm256_set1_epi32(3));
+  const int sy = static_cast<int>(shading.stride_y()), sz = static_cast<int>(shading.stride_z());
+  const int offset[8] = {0, 3, sy, sy + 3, sz, sz + 3, sz + sy, sz + sy + 3};
+  for (int a = 0; a < 3; ++a) {
+    __m256 v[8];
+    for (int corner = 0; corner < 8; ++corner)
+      v[corner] = _mm256_i32gather_ps(shading.data() + a + offset[corner], first, 4);
+    g[a] = lerp(lerp(lerp(v[0], v[1], c.fx), lerp(v[2], v[3], c.fx), c.fy),
+                lerp(lerp(v[4], v[5], c.fx), lerp(v[6], v[7], c.fx), c.fy), c.fz);
+  }
+}
+
+// FloatShading::terms of 8 gradients and directions: (a, b) per lane.
+VRI_AVX2 void terms8(const FloatShading& shading, const __m256 g[3], const __m256 d[3], __m256& a, __m256& b) {
+  const __m256 len = _mm256_sqrt_ps(
+      _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(g[0], g[0]), _mm256_mul_ps(g[1], g[1])), _mm256_mul_ps(g[2], g[2])));
+  const __m256 normal = _mm256_and_ps(_mm256_cmp_ps(len, _mm256_set1_ps(shading.flat()), _CMP_GE_OQ),
+                                      _mm256_cmp_ps(len, _mm256_setzero_ps(), _CMP_NEQ_OQ));
+  const __m256 dot = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(g[0], d[0]), _mm256_mul_ps(g[1], d[1])),
+                                   _mm256_mul_ps(g[2], d[2]));
+  const __m256 sign = _mm256_set1_ps(-0.0f);
+  const __m256 x = _mm256_div_ps(_mm256_andnot_ps(sign, dot), len);
+  const __m256 power = exp_neg8(_mm256_xor_ps(_mm256_mul_ps(_mm256_set1_ps(shading.shininess()), log8(x)), sign));
+  const __m256 flat_a = _mm256_set1_ps(shading.ka() + shading.kd());
+  a = _mm256_blendv_ps(flat_a, _mm256_add_ps(_mm256_set1_ps(shading.ka()), _mm256_mul_ps(_mm256_set1_ps(shading.kd()), x)),
+                       normal);
+  b = _mm256_and_ps(_mm256_mul_ps(_mm256_set1_ps(shading.ks()), power), normal);
 }
 
 #undef VRI_AVX2
@@ -419,7 +486,8 @@ void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler,
 template <class Value>
 __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volume, const FloatSampler& sampler,
                                                          const Value* values, const FloatTransferFunction& tf,
-                                                         const Ray* rays, double h, const Leap& leap, Rgba* out) {
+                                                         const FloatShading* shading, const Ray* rays, double h,
+                                                         const Leap& leap, Rgba* out) {
   RiemannLanes L{};  // lanes without a ray read cell 0
   const float termination = static_cast<float>(leap.termination);
   unsigned active = 0;
@@ -431,6 +499,8 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
     }
     L.iv[l] = *iv;
     L.t0[l] = iv->t0, L.t1[l] = iv->t1;
+    L.d[0][l] = static_cast<float>(rays[l].dir.x), L.d[1][l] = static_cast<float>(rays[l].dir.y);
+    L.d[2][l] = static_cast<float>(rays[l].dir.z);
     L.n[l] = riemann_samples(*iv, h);
     const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
     L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
@@ -470,7 +540,17 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
     if (!active) break;
     // Sample k of every lane, classified and composited (riemann_step).
     __m256 v[4];
-    transfer8(tf, sample8(sampler, values, L, k), v);
+    Cells8 cells;
+    transfer8(tf, sample8(sampler, values, L, k, &cells), v);
+    // The lit colour c a + b (riemann_step), unless no lane has opacity (a
+    // step with tau = 0 adds exactly nothing whatever its colour).
+    if (shading && _mm256_movemask_ps(_mm256_cmp_ps(v[3], _mm256_setzero_ps(), _CMP_NEQ_OQ))) {
+      __m256 g[3], a, b;
+      const __m256 d[3] = {load(L.d[0]), load(L.d[1]), load(L.d[2])};
+      gradient8(*shading, cells, g);
+      terms8(*shading, g, d, a, b);
+      for (int c = 0; c < 3; ++c) v[c] = _mm256_add_ps(_mm256_mul_ps(v[c], a), b);
+    }
     const __m256 e = exp_neg8(_mm256_mul_ps(v[3], _mm256_set_m128(hk[1], hk[0])));
     const __m256 T = load(L.T), w = _mm256_mul_ps(T, _mm256_sub_ps(one, e));
     store(L.r, _mm256_add_ps(load(L.r), _mm256_mul_ps(w, v[0])));
@@ -482,8 +562,9 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
 }
 
 void march_riemann_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatTransferFunction& tf,
-                          const Ray* rays, double h, const Leap& leap, Rgba* out) {
-  volume.visit([&](auto values) { march_riemann_lanes(volume, sampler, values.data(), tf, rays, h, leap, out); });
+                          const FloatShading* shading, const Ray* rays, double h, const Leap& leap, Rgba* out) {
+  volume.visit(
+      [&](auto values) { march_riemann_lanes(volume, sampler, values.data(), tf, shading, rays, h, leap, out); });
 }
 
 }  // namespace vri::detail

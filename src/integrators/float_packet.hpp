@@ -1,5 +1,5 @@
 #pragma once
-// Packets of rays for the unlit float paths of riemann, preint1 and preint2 (issue 8;
+// Packets of rays for the float paths of riemann (unlit and lit), preint1 and preint2 (unlit) (issue 8;
 // docs/PERFORMANCE.md, "Interactive speed"): kPacket neighbouring rays
 // marched together with AVX2, one ray a lane. Each lane keeps its own sample
 // positions u0 + i du, leaps (its own macro-cell queries) and partial last
@@ -7,6 +7,7 @@
 // table axis, looked up and composited as 8-lane vectors with the operations
 // of march_float (float_march.hpp) in the same order, and no FMA (the kernel
 // is compiled for AVX2 alone): the same bytes, ray by ray.
+#include "float_shading.hpp"
 #include "ray_steps.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/core/rgba.hpp"
@@ -31,7 +32,8 @@ void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler,
 void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler, const SecondOrderFloatLookup& table,
                           const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out);
 // out[i] = march_riemann_float(..., rays[i], ...) for i < kPacket (float_riemann.hpp).
+// `shading`: null unlit (float_shading.hpp).
 void march_riemann_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatTransferFunction& tf,
-                          const Ray* rays, double h, const Leap& leap, Rgba* out);
+                          const FloatShading* shading, const Ray* rays, double h, const Leap& leap, Rgba* out);
 
 }  // namespace vri::detail

@@ -1,5 +1,6 @@
 #pragma once
-// riemann's float path (issue 8; docs/PERFORMANCE.md, "Interactive speed"):
+// riemann's float path (issue 8; docs/PERFORMANCE.md, "Interactive speed"),
+// unlit and lit (float_shading.hpp):
 // RiemannIntegrator's sum (riemann.hpp) on the same sample positions, with the
 // per-sample work in float. Sample k sits at grid position u0 + k du (in
 // double, as the pre-integrated float paths, float_march.hpp), is interpolated
@@ -10,10 +11,10 @@
 // double path's by a few float roundings per step (tests bound it by 1e-4
 // per channel on the bundled scenes); it depends only on its ray.
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdint>
 
+#include "float_math.hpp"
+#include "float_shading.hpp"
 #include "ray_steps.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/core/rgba.hpp"
@@ -23,37 +24,17 @@
 
 namespace vri::detail {
 
-// exp(-x) for x >= 0 in float, to about one ulp: Cody and Waite's reduction
-// x = n ln 2 + r (ln 2 split in two parts), the degree-6 polynomial of
-// Cephes' expf on |r| <= ln 2 / 2, then 2^n from the exponent bits; below
-// e^-87 (under float's normal range) it returns about 1.6e-38, which makes
-// an opacity of 1. The ray packets (float_packet.cpp, exp_neg8) do the same
-// operations in the same order on 8 lanes: keep the two in step.
-namespace exp_poly {
-inline constexpr float kMin = -87.0f, kLog2e = 1.44269504088896341f;
-inline constexpr float kLn2Hi = 0.693359375f, kLn2Lo = -2.12194440e-4f;
-inline constexpr float kP[6] = {1.9875691500e-4f, 1.3981999507e-3f, 8.3334519073e-3f,
-                                4.1665795894e-2f, 1.6666665459e-1f, 5.0000001201e-1f};
-}  // namespace exp_poly
-
-inline float exp_neg(float x) {
-  using namespace exp_poly;
-  const float y = std::max(-x, kMin);
-  const float n = std::floor(y * kLog2e + 0.5f);
-  const float r = (y - n * kLn2Hi) - n * kLn2Lo;
-  float p = kP[0];
-  for (int i = 1; i < 6; ++i) p = p * r + kP[i];
-  const float e = (p * (r * r) + r) + 1.0f;
-  return e * std::bit_cast<float>(static_cast<std::int32_t>(static_cast<std::uint32_t>(static_cast<int>(n) + 127) << 23));
-}
-
-// One sample of riemann's float sum: its colour weighted by the step's
-// opacity, composited into (C, T).
+// One sample of riemann's float sum: its colour (lit: c a + b) weighted by
+// the step's opacity, composited into (C, T).
 inline void riemann_step(const FloatTransferFunction::Sample& v, float h_k, Float4& C, float& T) {
   const float e = exp_neg(v.tau * h_k);
   const float w = T * (1 - e);
   C += w * Float4{v.r, v.g, v.b, 0};
   T *= e;
+}
+inline void riemann_step(const FloatTransferFunction::Sample& v, const FloatShading::Terms& lit, float h_k, Float4& C,
+                         float& T) {
+  riemann_step({v.r * lit.a + lit.b, v.g * lit.a + lit.b, v.b * lit.a + lit.b, v.tau}, h_k, C, T);
 }
 
 // The head of a stretch of riemann's float march at sample k: a leap over the
@@ -77,15 +58,19 @@ inline long long riemann_samples(const Interval& iv, double h) {
   return std::max(1LL, static_cast<long long>(std::ceil(iv.length() / h)));
 }
 
-// `values`: the volume's typed samples (GridVolume::visit).
+// `values`: the volume's typed samples (GridVolume::visit); `shading`: null
+// unlit, else the lighting of each sample (float_shading.hpp).
 template <class Value>
 Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, const Value* values,
-                         const FloatTransferFunction& tf, const Ray& ray, double h, const Leap& leap) {
+                         const FloatTransferFunction& tf, const FloatShading* shading, const Ray& ray, double h,
+                         const Leap& leap) {
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const long long n = riemann_samples(*iv, h);
   const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
   const float termination = static_cast<float>(leap.termination);
+  const FloatShading::Vector d = {static_cast<float>(ray.dir.x), static_cast<float>(ray.dir.y),
+                                  static_cast<float>(ray.dir.z)};
   Float4 C = {0, 0, 0, 0};
   float T = 1;
   for (long long k = 0; k < n;) {
@@ -93,7 +78,17 @@ Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, 
     for (; k < stop; ++k) {
       const double h_k = std::min(h, iv->t1 - (iv->t0 + k * h));
       if (T < termination || !(h_k > 0)) return {C[0], C[1], C[2], 1 - T};
-      riemann_step(tf(sampler.at(values, u0 + static_cast<double>(k) * du)), static_cast<float>(h_k), C, T);
+      if (!shading) {
+        riemann_step(tf(sampler.at(values, u0 + static_cast<double>(k) * du)), static_cast<float>(h_k), C, T);
+        continue;
+      }
+      const FloatSampler::Cell cell = sampler.cell(u0 + static_cast<double>(k) * du);
+      const float s = FloatSampler::interpolate(corners_as_float(values + cell.offset, sampler.stride_y(),
+                                                                 sampler.stride_z()),
+                                                cell.f);
+      const FloatTransferFunction::Sample v = tf(s);
+      if (v.tau == 0) continue;  // adds exactly nothing: no gradient needed
+      riemann_step(v, shading->terms(shading->gradient(cell), d), static_cast<float>(h_k), C, T);
     }
   }
   return {C[0], C[1], C[2], 1 - T};

@@ -15,21 +15,24 @@ RiemannIntegrator::RiemannIntegrator(const GridVolume& volume, const TransferFun
     : volume_(volume),
       tf_(tf),
       fast_(volume, ZeroOpacity(tf), fast, "riemann"),
-      float_path_(!lighting.enabled && fast.float_math),
+      float_path_(fast.float_math),
       float_sampler_(volume),
       float_tf_(tf),
       packets_(float_path_ && detail::packets_fit(volume)) {
   if (lighting.enabled) shader_.emplace(lighting, volume);
+  if (lighting.enabled && float_path_) float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
   if (!(step >= 1e-4 && step <= 1e4))
     throw Error("riemann: step must be in [1e-4, 1e4] voxel units, got " + std::to_string(step));
   h_ = step * volume.voxel_unit();
 }
 
+RiemannIntegrator::~RiemannIntegrator() = default;
+
 Rgba RiemannIntegrator::integrate(const Ray& ray) const {
   return volume_.visit([&](auto values) {
     if (float_path_)
-      return detail::march_riemann_float(volume_, float_sampler_, values.data(), float_tf_, ray, h_,
-                                         {fast_.space(), fast_.termination()});
+      return detail::march_riemann_float(volume_, float_sampler_, values.data(), float_tf_, float_shading_.get(), ray,
+                                         h_, {fast_.space(), fast_.termination()});
     return march(ray, values.data());
   });
 }
@@ -73,7 +76,8 @@ void RiemannIntegrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
   if (packets_) {
     const detail::Leap leap{fast_.space(), fast_.termination()};
     for (; i + detail::kPacket <= n; i += detail::kPacket)
-      detail::march_riemann_packet(volume_, float_sampler_, float_tf_, rays + i, h_, leap, out + i);
+      detail::march_riemann_packet(volume_, float_sampler_, float_tf_, float_shading_.get(), rays + i, h_, leap,
+                                   out + i);
   }
   for (; i < n; ++i) out[i] = integrate(rays[i]);
 }

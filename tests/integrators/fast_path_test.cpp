@@ -268,6 +268,29 @@ TEST(FastPath, EveryStorageTypeGivesTheBytesOfTheFloatVolume) {
   expect_storage_gives_float_bytes<std::int16_t>(250, -32000);  // negative and positive samples
 }
 
+// Lit riemann on its float path (float_shading.hpp): within 1e-4 of the lit
+// double path, its packets the bytes of its scalar march, skipping exact.
+TEST(FastPath, LitRiemannFloatPathAndPackets) {
+  for (const char* file : {"scenes/neghip_lit.json", "scenes/marschner_lobb_lit.json"}) {
+    const Scene scene = small(file, 40);
+    const MethodSpec spec{.name = "riemann", .step = 0.5};
+    const Image fast = render_with(scene, spec, kSkip, scene.lighting);
+    const double worst = max_difference(fast, render_with(scene, spec, kSkipDouble, scene.lighting));
+    EXPECT_LE(worst, 1e-4) << file;
+    EXPECT_GT(worst, 0) << file;
+    expect_same_bytes(fast, render_with(scene, spec, kPlain, scene.lighting), std::string(file) + " skipping");
+    MethodSpec with_fast = spec;
+    with_fast.fast = kSkip;
+    const auto integrator = make_integrator(with_fast, scene.grid(), scene.transfer_function, scene.lighting);
+    const Camera camera(scene.camera);
+    Image single(camera.width(), camera.height());
+    for (int y = 0; y < camera.height(); ++y)
+      for (int x = 0; x < camera.width(); ++x) single.set(x, y, integrator->integrate(camera.ray(x, y)));
+    expect_same_bytes(render(camera, *integrator, {.threads = 1, .tile_size = 40}), single,
+                      std::string(file) + " packets");
+  }
+}
+
 TEST(FastPath, SameBytesWithAnyThreadCount) {
   const Scene scene = small("scenes/neghip.json", 64);
   for (const char* name : {"riemann", "preint1", "preint2"}) {

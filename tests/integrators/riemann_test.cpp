@@ -41,6 +41,22 @@ TEST(Riemann, StepsAreInVoxelUnits) {
   EXPECT_NEAR(RiemannIntegrator(vol, tf, 1.0).integrate(ray)[3], 1 - std::exp(-1.75), 1e-6);  // float path
 }
 
+// A constant field: the sum is exact whatever the step, 1 - exp(-tau L)
+// in alpha and c (1 - exp(-tau L)) in colour, to float rounding.
+TEST(Riemann, FloatPathHomogeneousSlabIsClosedForm) {
+  const GridVolume volume({5, 5, 9}, std::vector<float>(5 * 5 * 9, 100.0f));
+  const TransferFunction tf({{0, 0.2, 0.4, 0.8, 0.3}, {200, 0.2, 0.4, 0.8, 0.3}});
+  for (double step : {1.0, 0.7, 0.25}) {
+    const RiemannIntegrator riemann(volume, tf, step);
+    const Ray ray{{2.3, 1.7, -5}, {0, 0, 1}};  // through z = 0 .. 8: L = 8
+    const Rgba v = riemann.integrate(ray);
+    const double alpha = 1 - std::exp(-0.3 * 8);
+    EXPECT_NEAR(v[3], alpha, 2e-6) << step;
+    EXPECT_NEAR(v[0], 0.2 * alpha, 2e-6) << step;
+    EXPECT_NEAR(v[2], 0.8 * alpha, 2e-6) << step;
+  }
+}
+
 // Summed absolute error against exact for h = 0.2, 0.1, 0.05, 0.025 on neghip (24 x 24).
 std::vector<double> neghip_errors(const Lighting& lighting) {
   Scene scene = load_scene(test::source_path("scenes/neghip.json"));

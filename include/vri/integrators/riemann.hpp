@@ -8,9 +8,10 @@
 // With lighting, c(s_k) is replaced by c_lit at the sample (SPEC §5).
 // FastPath (fast_path.hpp): samples in empty macro cells are leapt over (they
 // have tau = 0 and add nothing), and the ray may stop once T < termination.
-// Unless fast.float_math is off, unlit riemann works in float on the same
-// sample positions (float_riemann.hpp), on packets of 8 rays where the CPU
-// has AVX2; lit, it stays in double.
+// Unless fast.float_math is off, riemann works in float on the same sample
+// positions (float_riemann.hpp; lit, float_shading.hpp), on packets of 8 rays
+// where the CPU has AVX2.
+#include <memory>
 #include <optional>
 
 #include "vri/integrators/fast_path.hpp"
@@ -23,13 +24,18 @@
 
 namespace vri {
 
+namespace detail {
+class FloatShading;  // src/integrators/float_shading.hpp
+}
+
 class RiemannIntegrator final : public Integrator {
  public:
   // step in voxel units; throws vri::Error unless 1e-4 <= step <= 1e4.
   RiemannIntegrator(const GridVolume& volume, const TransferFunction& tf, double step,
                     const Lighting& lighting = {}, const FastPath& fast = {});
+  ~RiemannIntegrator() override;
   Rgba integrate(const Ray& ray) const override;
-  // Unlit on the float path, on a CPU with AVX2: packets of 8 neighbouring
+  // On the float path, on a CPU with AVX2: packets of 8 neighbouring
   // rays (float_packet.hpp), the same bytes as integrate.
   void integrate_row(const Ray* rays, int n, Rgba* out) const override;
   std::string_view name() const override { return "riemann"; }
@@ -44,9 +50,10 @@ class RiemannIntegrator final : public Integrator {
   double h_;  // world units
   std::optional<HeadlightShader> shader_;
   detail::Skipping fast_;
-  bool float_path_;  // unlit and fast.float_math
+  bool float_path_;  // fast.float_math
   FloatSampler float_sampler_;
   FloatTransferFunction float_tf_;
+  std::unique_ptr<detail::FloatShading> float_shading_;  // lit, on the float path
   bool packets_;  // integrate_row marches packets
 };
 

@@ -11,6 +11,7 @@
 // volume's typed samples (GridVolume::visit, once per ray or packet), each
 // corner converted to float exactly.
 #include <algorithm>
+#include <array>
 #include <cstddef>
 
 #include "vri/core/vec3.hpp"
@@ -37,18 +38,25 @@ class FloatSampler {
   }
   Vec3 grid_step(Vec3 d) const { return {d.x * inverse_.x, d.y * inverse_.y, d.z * inverse_.z}; }
 
-  // Trilinear value at grid position u of the volume's samples `values`,
-  // clamped onto the box as GridVolume::sample.
-  template <class T>
-  float at(const T* values, Vec3 u) const {
-    int c[3];
+  // The cell of grid position u (clamped onto the box as GridVolume::sample):
+  // the offset of its first corner and the float fractions in it.
+  struct Cell {
+    std::size_t offset;
     float f[3];
+  };
+  Cell cell(Vec3 u) const {
+    int c[3];
+    Cell out;
     for (int a = 0; a < 3; ++a) {
       const double x = std::clamp(u[a], 0.0, top_[a]);
       c[a] = std::min(static_cast<int>(x), last_cell_[a]);
-      f[a] = static_cast<float>(x - c[a]);
+      out.f[a] = static_cast<float>(x - c[a]);
     }
-    const auto v = corners_as_float(values + (static_cast<std::size_t>(c[0]) + sy_ * c[1] + sz_ * c[2]), sy_, sz_);
+    out.offset = static_cast<std::size_t>(c[0]) + sy_ * c[1] + sz_ * c[2];
+    return out;
+  }
+  // Trilinear in a cell's corners c000, c100, c010, c110, c001, ... (x fastest).
+  static float interpolate(const std::array<float, 8>& v, const float (&f)[3]) {
     const float c00 = v[0] + f[0] * (v[1] - v[0]);
     const float c10 = v[2] + f[0] * (v[3] - v[2]);
     const float c01 = v[4] + f[0] * (v[5] - v[4]);
@@ -56,6 +64,13 @@ class FloatSampler {
     const float c0 = c00 + f[1] * (c10 - c00);
     const float c1 = c01 + f[1] * (c11 - c01);
     return c0 + f[2] * (c1 - c0);
+  }
+
+  // Trilinear value at grid position u of the volume's samples `values`.
+  template <class T>
+  float at(const T* values, Vec3 u) const {
+    const Cell c = cell(u);
+    return interpolate(corners_as_float(values + c.offset, sy_, sz_), c.f);
   }
 
   // The layout `at` reads, for the ray packets (src/integrators/float_packet.cpp).

@@ -23,6 +23,9 @@ class GradientField {
   // The 8 corner values of component `axis` of cell (i, j, k), in the order
   // c000, c100, c010, c110, c001, c101, c011, c111.
   std::array<double, 8> cell_corners(int axis, std::array<int, 3> cell) const;
+  // The stored vectors, 3 floats (x, y, z) per grid point, for the float
+  // paths (src/integrators/float_shading.hpp).
+  const float* data() const { return g_.data(); }
 
  private:
   template <class T>

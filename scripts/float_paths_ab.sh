@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# float_paths_ab.sh BUILD_DIR [REPEATS]: the float paths of riemann, preint1 and
+# preint2 (unlit, packets of 8 rays with AVX2) against their double paths
+# (--double), on neghip, engine and bonsai at 512x512, step 1, one thread.
+# Each render REPEATS times (default 5), float and double interleaved; prints
+# the fastest render CPU time vri reports (not loading or building tables)
+# and the largest difference between the two images (docs/PERFORMANCE.md,
+# "Fourth slice").
+set -euo pipefail
+build=${1:?usage: float_paths_ab.sh BUILD_DIR [REPEATS]}
+repeats=${2:-5}
+vri="$build/vri"
+root="$(cd "$(dirname "$0")/.." && pwd)"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cpu_ms() { grep -o "CPU [0-9.e-]* s" | awk '{printf "%.1f", $2 * 1000}'; }
+echo "| scene | method | double CPU ms | float CPU ms | double / float | max difference |"
+echo "|---|---|---|---|---|---|"
+for scene in neghip engine bonsai; do
+  for method in riemann preint1 preint2; do
+    best_d=; best_f=
+    for _ in $(seq "$repeats"); do
+      for path in double float; do
+        extra=(); [ "$path" = double ] && extra=(--double)
+        t=$("$vri" render "$root/scenes/$scene.json" -o "$tmp/$path.npy" --method "$method" --step 1 \
+              --width 512 --height 512 --threads 1 "${extra[@]}" 2>&1 | cpu_ms)
+        if [ "$path" = double ]; then
+          best_d=$(python3 -c "print(min(x for x in [$t, ${best_d:-1e9}]))")
+        else
+          best_f=$(python3 -c "print(min(x for x in [$t, ${best_f:-1e9}]))")
+        fi
+      done
+    done
+    diff=$(python3 -c "import numpy as n; a=n.load('$tmp/double.npy'); b=n.load('$tmp/float.npy'); print('%.1e' % abs(a.astype(float)-b).max())")
+    echo "| $scene | $method | $best_d | $best_f | $(python3 -c "print('%.2f' % ($best_d / $best_f))") | $diff |"
+  done
+done
