@@ -20,20 +20,46 @@ bool packets_fit(const GridVolume& volume) {
 
 namespace {
 
+// What every march keeps per ray, a lane each: its sample positions u0 + k du
+// in grid units, its clipped interval and what it composited so far.
+struct RayLanes {
+  alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0
+  alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
+  alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];
+  Interval iv[kPacket];
+};
+
+// Clips the rays to the volume and starts the lanes that hit it (steps of h
+// from the entry, T = 1); a ray that misses gets a transparent pixel. Returns
+// the mask of the lanes started.
+unsigned enter(RayLanes& L, const GridVolume& volume, const FloatSampler& sampler, const Ray* rays, double h,
+               Rgba* out) {
+  unsigned active = 0;
+  for (int l = 0; l < kPacket; ++l) {
+    const auto iv = clip_to_box(rays[l], volume.box_lo(), volume.box_hi());
+    if (!iv) {
+      out[l] = {0, 0, 0, 0};
+      continue;
+    }
+    L.iv[l] = *iv;
+    const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
+    L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
+    L.T[l] = 1;
+    active |= 1u << l;
+  }
+  return active;
+}
+
 // Each ray's state, a lane each: what march_float keeps in locals, for slabs
 // of Steps steps (1: preint1, 2: preint2).
 template <int Steps>
-struct Lanes {
-  alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0, grid units
-  alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
+struct Lanes : RayLanes {
   alignas(32) int k[kPacket], stop[kPacket], full[kPacket];
   // The slab's samples, front to back: scalar, entry and weight on the table axis.
   alignas(32) float s[Steps + 1][kPacket];
   alignas(32) int i[Steps + 1][kPacket];
   alignas(32) float w[Steps + 1][kPacket];
   alignas(32) int entry[kPacket];  // the slab's spot (find): its first entry's offset
-  alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];  // composited so far
-  Interval iv[kPacket];
   double t_check[kPacket];
 };
 
@@ -262,15 +288,11 @@ VRI_AVX2 void start_slab(const FloatSampler& sampler, const T* values, const Tab
 }
 
 // Each ray's state for riemann, a lane each: what march_riemann_float keeps in locals.
-struct RiemannLanes {
-  alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0, grid units
-  alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
-  alignas(32) double t0[kPacket], t1[kPacket];                // the clipped ray
-  alignas(32) float d[3][kPacket];                            // the direction, for lighting
+struct RiemannLanes : RayLanes {
+  alignas(32) double t0[kPacket], t1[kPacket];  // the clipped ray
+  alignas(32) float d[3][kPacket];              // the direction, for lighting
   alignas(32) int k[kPacket], stop[kPacket];
-  alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];  // composited so far
   long long n[kPacket];
-  Interval iv[kPacket];
 };
 
 // FloatTransferFunction::operator() of 8 scalars: the bin's segment, the
@@ -382,20 +404,11 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
   const int n = table.size();
   const TableAxis8 axis = axis8(table.axis());
   const float termination = static_cast<float>(leap.termination);
-  unsigned active = 0;
-  for (int l = 0; l < kPacket; ++l) {
-    const auto iv = clip_to_box(rays[l], volume.box_lo(), volume.box_hi());
-    if (!iv) {
-      out[l] = {0, 0, 0, 0};
-      continue;
-    }
-    L.iv[l] = *iv;
-    L.full[l] = static_cast<int>(std::floor(iv->length() / (steps * h)));
-    const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
-    L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
-    L.T[l] = 1;
+  unsigned active = enter(L, volume, sampler, rays, h, out);
+  for (unsigned m = active; m; m &= m - 1) {
+    const int l = __builtin_ctz(m);
+    L.full[l] = static_cast<int>(std::floor(L.iv[l].length() / (steps * h)));
     L.t_check[l] = -std::numeric_limits<double>::infinity();
-    active |= 1u << l;
   }
   start_slab(sampler, values, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
   const auto finish = [&](int l) {
@@ -490,22 +503,13 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
                                                          const Leap& leap, Rgba* out) {
   RiemannLanes L{};  // lanes without a ray read cell 0
   const float termination = static_cast<float>(leap.termination);
-  unsigned active = 0;
-  for (int l = 0; l < kPacket; ++l) {
-    const auto iv = clip_to_box(rays[l], volume.box_lo(), volume.box_hi());
-    if (!iv) {
-      out[l] = {0, 0, 0, 0};
-      continue;
-    }
-    L.iv[l] = *iv;
-    L.t0[l] = iv->t0, L.t1[l] = iv->t1;
+  unsigned active = enter(L, volume, sampler, rays, h, out);
+  for (unsigned m = active; m; m &= m - 1) {
+    const int l = __builtin_ctz(m);
+    L.t0[l] = L.iv[l].t0, L.t1[l] = L.iv[l].t1;
     L.d[0][l] = static_cast<float>(rays[l].dir.x), L.d[1][l] = static_cast<float>(rays[l].dir.y);
     L.d[2][l] = static_cast<float>(rays[l].dir.z);
-    L.n[l] = riemann_samples(*iv, h);
-    const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
-    L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
-    L.T[l] = 1;
-    active |= 1u << l;
+    L.n[l] = riemann_samples(L.iv[l], h);
   }
   const auto finish = [&](int l) {
     out[l] = {L.r[l], L.g[l], L.b[l], 1 - L.T[l]};

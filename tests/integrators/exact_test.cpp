@@ -108,7 +108,8 @@ TEST(Exact, AgreesWithExtrapolatedRiemannSums) {
   const auto vol = random_field({5, 5, 5}, 77);
   const auto tf = test::random_tf(rng, 1.0, 1.5, /*steps=*/false);
   const ExactIntegrator ex(vol, tf, 1e-9);
-  const RiemannIntegrator coarse(vol, tf, 2e-3), fine(vol, tf, 1e-3);
+  const FastPath double_path{.float_math = false};  // the reference sums, not their float path
+  const RiemannIntegrator coarse(vol, tf, 2e-3, {}, double_path), fine(vol, tf, 1e-3, {}, double_path);
   for (const Ray& ray : {Ray{{-1, 2.2, 1.7}, normalize({1, 0.1, 0.05})}, Ray{{2, -3, 2}, normalize({0.1, 1, 0.2})}}) {
     const Rgba e = ex.integrate(ray), a = coarse.integrate(ray), b = fine.integrate(ray);
     for (int c = 0; c < 4; ++c) EXPECT_NEAR(e[c], 2 * b[c] - a[c], 2e-5) << c;  // first-order Richardson
@@ -149,7 +150,10 @@ TEST(Exact, LitHonoursItsToleranceAndAgreesWithExtrapolatedRiemann) {
     const auto smooth_tf = test::random_tf(rng, 1.0, 2.0, /*steps=*/false);
     const ExactIntegrator tight(vol, tf, 1e-11, light), ex(vol, tf, 1e-5, light);
     const ExactIntegrator smooth(vol, smooth_tf, 1e-11, light);
-    const RiemannIntegrator coarse(vol, smooth_tf, 4e-4, light), fine(vol, smooth_tf, 2e-4, light);
+    // riemann's double path: Richardson's 1e-5 needs more than float sums over 10^5 steps.
+    const FastPath double_path{.float_math = false};
+    const RiemannIntegrator coarse(vol, smooth_tf, 4e-4, light, double_path),
+        fine(vol, smooth_tf, 2e-4, light, double_path);
     for (int r = 0; r < 10; ++r) {
       const Vec3 target{2.5 + 2 * u(rng), 2.5 + 2 * u(rng), 2.5 + 2 * u(rng)};
       const Vec3 eye = target - 12 * normalize({u(rng), u(rng), u(rng)});
