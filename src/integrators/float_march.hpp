@@ -22,6 +22,7 @@
 #include <cmath>
 #include <limits>
 
+#include "float_shading.hpp"
 #include "ray_steps.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/core/rgba.hpp"
@@ -31,44 +32,80 @@
 
 namespace vri::detail {
 
+// A sample of a float march: the scalar and, lit, the gradient there.
+struct FloatSample {
+  float s;
+  FloatShading::Vector g;
+};
+template <class Value>
+FloatSample sample_at(const FloatSampler& sampler, const Value* values, const FloatShading* shading, Vec3 u) {
+  if (!shading) return {sampler.at(values, u), {}};
+  const FloatSampler::Cell cell = sampler.cell(u);
+  return {FloatSampler::interpolate(corners_as_float(values + cell.offset, sampler.stride_y(), sampler.stride_z()),
+                                    cell.f),
+          shading->gradient(cell)};
+}
+
+// The mean of a slab's gradients (its one normal in `sampled`), summed front
+// to back; and a pre-integrated slab lit with one normal's terms, lit_by in
+// float (vri/shading/lit_slab.hpp).
+template <std::size_t N>
+FloatShading::Vector mean(const std::array<FloatShading::Vector, N>& g) {
+  FloatShading::Vector sum = g[0];
+  for (std::size_t i = 1; i < N; ++i)
+    for (int a = 0; a < 3; ++a) sum[a] = sum[a] + g[i][a];
+  for (int a = 0; a < 3; ++a) sum[a] = sum[a] * (1.0f / N);
+  return sum;
+}
+inline Float4 lit(const FloatShading::Terms& t, Float4 v) {
+  return Float4{v[0] * t.a + t.b * v[3], v[1] * t.a + t.b * v[3], v[2] * t.a + t.b * v[3], v[3]};
+}
+
 // The end of a float march: the pixel (C, 1 - T) once T < termination, else
 // with the partial last slab from the front sample s_front (the first sample
 // of slab `full`) to the exit iv.t1 integrated exactly, as on the double path:
-// Steps linear sub-slabs of equal length. `values`: the volume's typed
-// samples (GridVolume::visit).
+// Steps linear sub-slabs of equal length; lit (`shading` not null), each
+// sub-slab lit by the mean of the gradients at its ends, as the double path's
+// `sampled` mode. `values`: the volume's typed samples (GridVolume::visit).
 template <int Steps, class Value>
-Rgba finish_float(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf, const Ray& ray,
-                  const Interval& iv, long long full, double h, float s_front, float termination, Float4 C, float T) {
+Rgba finish_float(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf, const FloatShading* shading,
+                  const Ray& ray, const Interval& iv, long long full, double h, FloatSample front, float termination,
+                  Float4 C, float T) {
   const double t_rest = iv.t0 + full * Steps * h;
   const double sub = (iv.t1 - t_rest) / Steps;
+  const FloatShading::Vector d = direction(ray);
   if (!(T < termination) && sub > 0)
     for (int i = 1; i <= Steps; ++i) {
-      const float s_back = sampler.at(values, sampler.grid(ray.at(i == Steps ? iv.t1 : t_rest + i * sub)));
-      const SlabRgba v = exact_slab(tf, s_front, s_back, sub);
-      C += T * Float4{static_cast<float>(v.r), static_cast<float>(v.g), static_cast<float>(v.b), 0};
-      T *= 1 - static_cast<float>(v.a);
-      s_front = s_back;
+      const FloatSample back =
+          sample_at(sampler, values, shading, sampler.grid(ray.at(i == Steps ? iv.t1 : t_rest + i * sub)));
+      const SlabRgba e = exact_slab(tf, front.s, back.s, sub);
+      Float4 v = {static_cast<float>(e.r), static_cast<float>(e.g), static_cast<float>(e.b), static_cast<float>(e.a)};
+      if (shading) v = lit(shading->terms(mean(std::array{front.g, back.g}), d), v);
+      C += T * Float4{v[0], v[1], v[2], 0};
+      T *= 1 - v[3];
+      front = back;
     }
   return {C[0], C[1], C[2], 1 - T};
 }
 
 template <class Lookup, class Value>
 Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Value* values, const Lookup& table,
-                 const DiscreteTf& tf, const Ray& ray, double h, const Leap& leap) {
+                 const DiscreteTf& tf, const FloatShading* shading, const Ray& ray, double h, const Leap& leap) {
   constexpr int steps = Lookup::kSteps;
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const long long full = static_cast<long long>(std::floor(iv->length() / (steps * h)));
   const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
   struct Point {
-    float s;
+    FloatSample sample;
     typename Lookup::Place place;
   };
   using Slab = std::array<Point, steps + 1>;  // the slab's samples, front to back
   const auto sample = [&](long long i) {
-    const float s = sampler.at(values, u0 + static_cast<double>(i) * du);
-    return Point{s, table.place(s)};
+    const FloatSample s = sample_at(sampler, values, shading, u0 + static_cast<double>(i) * du);
+    return Point{s, table.place(s.s)};
   };
+  const FloatShading::Vector d = direction(ray);
   // Samples 1 .. steps of slab k into p (p[0] is in hand).
   const auto fill = [&](Slab& p, long long k) {
     for (int i = 1; i <= steps; ++i) p[i] = sample(k * steps + i);
@@ -110,14 +147,19 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Va
       next.fill(p[steps]);
       if (k + 1 < full) fill(next, k + 1);
       const auto following = find(next);
-      const Float4 v = table.blend(spot);
+      Float4 v = table.blend(spot);
+      if (shading) {
+        std::array<FloatShading::Vector, steps + 1> g;
+        for (int i = 0; i <= steps; ++i) g[i] = p[i].sample.g;
+        v = lit(shading->terms(mean(g), d), v);
+      }
       C += T * v;
       T *= 1 - v[3];
       p = next;
       spot = following;
     }
   }
-  return finish_float<steps>(sampler, values, tf, ray, *iv, full, h, p[0].s, termination, C, T);
+  return finish_float<steps>(sampler, values, tf, shading, ray, *iv, full, h, p[0].sample, termination, C, T);
 }
 
 }  // namespace vri::detail

@@ -26,6 +26,7 @@ struct RayLanes {
   alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0
   alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
   alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];
+  alignas(32) float d[3][kPacket];  // the direction, for lighting
   Interval iv[kPacket];
 };
 
@@ -45,6 +46,8 @@ unsigned enter(RayLanes& L, const GridVolume& volume, const FloatSampler& sample
     const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
     L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
     L.T[l] = 1;
+    L.d[0][l] = static_cast<float>(rays[l].dir.x), L.d[1][l] = static_cast<float>(rays[l].dir.y);
+    L.d[2][l] = static_cast<float>(rays[l].dir.z);
     active |= 1u << l;
   }
   return active;
@@ -59,6 +62,7 @@ struct Lanes : RayLanes {
   alignas(32) float s[Steps + 1][kPacket];
   alignas(32) int i[Steps + 1][kPacket];
   alignas(32) float w[Steps + 1][kPacket];
+  alignas(32) float grad[Steps + 1][3][kPacket];  // lit: the samples' gradients
   alignas(32) int entry[kPacket];  // the slab's spot (find): its first entry's offset
   double t_check[kPacket];
 };
@@ -268,60 +272,6 @@ VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const Lanes<2>& L, __m
   for (int ch = 0; ch < 4; ++ch) v[ch] = lerp(lerp(c[0][0][ch], c[0][1][ch], wm), lerp(c[1][0][ch], c[1][1][ch], wm), wf);
 }
 
-// Slab k of the lanes in `bits` found anew, at a ray's entry or after a
-// leap: its samples k Steps .. (k + 1) Steps and its spot.
-template <int Steps, class T>
-VRI_AVX2 void start_slab(const FloatSampler& sampler, const T* values, const TableAxis8& axis, int n, Lanes<Steps>& L,
-                         unsigned bits) {
-  const __m256 m = lane_mask(bits);
-  const __m256i first = _mm256_mullo_epi32(load(L.k), _mm256_set1_epi32(Steps));
-  __m256i i[Steps + 1];
-  for (int j = 0; j <= Steps; ++j) {
-    const __m256 s = sample8(sampler, values, L, _mm256_add_epi32(first, _mm256_set1_epi32(j)));
-    __m256 w;
-    place8(axis, s, i[j], w);
-    store(L.s[j], _mm256_blendv_ps(load(L.s[j]), s, m));
-    store(L.w[j], _mm256_blendv_ps(load(L.w[j]), w, m));
-    store(L.i[j], blend(load(L.i[j]), i[j], m));
-  }
-  store(L.entry, blend(load(L.entry), spot8<Steps>(i, _mm256_set1_epi32(n)), m));
-}
-
-// Each ray's state for riemann, a lane each: what march_riemann_float keeps in locals.
-struct RiemannLanes : RayLanes {
-  alignas(32) double t0[kPacket], t1[kPacket];  // the clipped ray
-  alignas(32) float d[3][kPacket];              // the direction, for lighting
-  alignas(32) int k[kPacket], stop[kPacket];
-  long long n[kPacket];
-};
-
-// FloatTransferFunction::operator() of 8 scalars: the bin's segment, the
-// walk to the segment that holds each scalar (both ways, lanes as masks),
-// then ref + slope (s - s_ref) per channel.
-VRI_AVX2 void transfer8(const FloatTransferFunction& tf, __m256 s, __m256 v[4]) {
-  const __m256 u = _mm256_min_ps(_mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(s, _mm256_set1_ps(tf.lo())),
-                                                             _mm256_set1_ps(tf.scale())),
-                                               _mm256_setzero_ps()),
-                                 _mm256_set1_ps(static_cast<float>(FloatTransferFunction::kBins - 1)));
-  __m256i i = _mm256_i32gather_epi32(tf.first(), _mm256_cvttps_epi32(u), 4);
-  const float* bp = tf.breakpoints();
-  for (;;) {  // up while breakpoint i <= s (the last breakpoint is +inf)
-    const __m256i up = _mm256_castps_si256(_mm256_cmp_ps(_mm256_i32gather_ps(bp, i, 4), s, _CMP_LE_OQ));
-    if (_mm256_testz_si256(up, up)) break;
-    i = _mm256_sub_epi32(i, up);
-  }
-  for (;;) {  // down while i > 0 and breakpoint i - 1 > s
-    const __m256i below = _mm256_max_epi32(_mm256_sub_epi32(i, _mm256_set1_epi32(1)), _mm256_setzero_si256());
-    const __m256i down = _mm256_and_si256(_mm256_cmpgt_epi32(i, _mm256_setzero_si256()),
-                                          _mm256_castps_si256(_mm256_cmp_ps(_mm256_i32gather_ps(bp, below, 4), s, _CMP_GT_OQ)));
-    if (_mm256_testz_si256(down, down)) break;
-    i = _mm256_add_epi32(i, down);
-  }
-  const __m256 ds = _mm256_sub_ps(s, _mm256_i32gather_ps(tf.s_ref(), i, 4));
-  for (int c = 0; c < 4; ++c)
-    v[c] = _mm256_add_ps(_mm256_i32gather_ps(tf.value(c), i, 4), _mm256_mul_ps(_mm256_i32gather_ps(tf.slope(c), i, 4), ds));
-}
-
 // exp_neg (float_riemann.hpp) on 8 lanes, the same operations in the same order.
 VRI_AVX2 __m256 exp_neg8(__m256 x) {
   using namespace exp_poly;
@@ -389,6 +339,65 @@ VRI_AVX2 void terms8(const FloatShading& shading, const __m256 g[3], const __m25
   b = _mm256_and_ps(_mm256_mul_ps(_mm256_set1_ps(shading.ks()), power), normal);
 }
 
+// Slab k of the lanes in `bits` found anew, at a ray's entry or after a
+// leap: its samples k Steps .. (k + 1) Steps and its spot.
+template <int Steps, class T>
+VRI_AVX2 void start_slab(const FloatSampler& sampler, const T* values, const FloatShading* shading,
+                         const TableAxis8& axis, int n, Lanes<Steps>& L, unsigned bits) {
+  const __m256 m = lane_mask(bits);
+  const __m256i first = _mm256_mullo_epi32(load(L.k), _mm256_set1_epi32(Steps));
+  __m256i i[Steps + 1];
+  for (int j = 0; j <= Steps; ++j) {
+    Cells8 cells;
+    const __m256 s = sample8(sampler, values, L, _mm256_add_epi32(first, _mm256_set1_epi32(j)), &cells);
+    if (shading) {
+      __m256 g[3];
+      gradient8(*shading, cells, g);
+      for (int a = 0; a < 3; ++a) store(L.grad[j][a], _mm256_blendv_ps(load(L.grad[j][a]), g[a], m));
+    }
+    __m256 w;
+    place8(axis, s, i[j], w);
+    store(L.s[j], _mm256_blendv_ps(load(L.s[j]), s, m));
+    store(L.w[j], _mm256_blendv_ps(load(L.w[j]), w, m));
+    store(L.i[j], blend(load(L.i[j]), i[j], m));
+  }
+  store(L.entry, blend(load(L.entry), spot8<Steps>(i, _mm256_set1_epi32(n)), m));
+}
+
+// Each ray's state for riemann, a lane each: what march_riemann_float keeps in locals.
+struct RiemannLanes : RayLanes {
+  alignas(32) double t0[kPacket], t1[kPacket];  // the clipped ray
+  alignas(32) int k[kPacket], stop[kPacket];
+  long long n[kPacket];
+};
+
+// FloatTransferFunction::operator() of 8 scalars: the bin's segment, the
+// walk to the segment that holds each scalar (both ways, lanes as masks),
+// then ref + slope (s - s_ref) per channel.
+VRI_AVX2 void transfer8(const FloatTransferFunction& tf, __m256 s, __m256 v[4]) {
+  const __m256 u = _mm256_min_ps(_mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(s, _mm256_set1_ps(tf.lo())),
+                                                             _mm256_set1_ps(tf.scale())),
+                                               _mm256_setzero_ps()),
+                                 _mm256_set1_ps(static_cast<float>(FloatTransferFunction::kBins - 1)));
+  __m256i i = _mm256_i32gather_epi32(tf.first(), _mm256_cvttps_epi32(u), 4);
+  const float* bp = tf.breakpoints();
+  for (;;) {  // up while breakpoint i <= s (the last breakpoint is +inf)
+    const __m256i up = _mm256_castps_si256(_mm256_cmp_ps(_mm256_i32gather_ps(bp, i, 4), s, _CMP_LE_OQ));
+    if (_mm256_testz_si256(up, up)) break;
+    i = _mm256_sub_epi32(i, up);
+  }
+  for (;;) {  // down while i > 0 and breakpoint i - 1 > s
+    const __m256i below = _mm256_max_epi32(_mm256_sub_epi32(i, _mm256_set1_epi32(1)), _mm256_setzero_si256());
+    const __m256i down = _mm256_and_si256(_mm256_cmpgt_epi32(i, _mm256_setzero_si256()),
+                                          _mm256_castps_si256(_mm256_cmp_ps(_mm256_i32gather_ps(bp, below, 4), s, _CMP_GT_OQ)));
+    if (_mm256_testz_si256(down, down)) break;
+    i = _mm256_add_epi32(i, down);
+  }
+  const __m256 ds = _mm256_sub_ps(s, _mm256_i32gather_ps(tf.s_ref(), i, 4));
+  for (int c = 0; c < 4; ++c)
+    v[c] = _mm256_add_ps(_mm256_i32gather_ps(tf.value(c), i, 4), _mm256_mul_ps(_mm256_i32gather_ps(tf.slope(c), i, 4), ds));
+}
+
 #undef VRI_AVX2
 
 }  // namespace
@@ -398,7 +407,8 @@ VRI_AVX2 void terms8(const FloatShading& shading, const __m256 g[3], const __m25
 template <class Lookup, class Value>
 __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, const FloatSampler& sampler,
                                                   const Value* values, const Lookup& table, const DiscreteTf& tf,
-                                                  const Ray* rays, double h, const Leap& leap, Rgba* out) {
+                                                  const FloatShading* shading, const Ray* rays, double h,
+                                                  const Leap& leap, Rgba* out) {
   constexpr int steps = Lookup::kSteps;
   Lanes<steps> L{};  // lanes without a ray read cell 0 and entry 0
   const int n = table.size();
@@ -410,9 +420,10 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     L.full[l] = static_cast<int>(std::floor(L.iv[l].length() / (steps * h)));
     L.t_check[l] = -std::numeric_limits<double>::infinity();
   }
-  start_slab(sampler, values, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
+  start_slab(sampler, values, shading, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
   const auto finish = [&](int l) {
-    out[l] = finish_float<steps>(sampler, values, tf, rays[l], L.iv[l], L.full[l], h, L.s[0][l], termination,
+    const FloatSample front{L.s[0][l], {L.grad[0][0][l], L.grad[0][1][l], L.grad[0][2][l]}};
+    out[l] = finish_float<steps>(sampler, values, tf, shading, rays[l], L.iv[l], L.full[l], h, front, termination,
                                  Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
     active &= ~(1u << l);
   };
@@ -442,7 +453,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     for (unsigned m = active & ~before_stop; m; m &= m - 1)
       if (const int l = __builtin_ctz(m); head(l)) leapt |= 1u << l;
     if (leapt) {
-      start_slab(sampler, values, axis, n, L, leapt);
+      start_slab(sampler, values, shading, axis, n, L, leapt);
       for (unsigned m = leapt; m; m &= m - 1)  // leapt to the end: the partial slab from sample `full` Steps
         if (const int l = __builtin_ctz(m); L.k[l] == L.full[l]) finish(l);
     }
@@ -458,41 +469,68 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     const __m256i next_first = _mm256_mullo_epi32(k1, _mm256_set1_epi32(steps));
     const __m256 back_s = load(L.s[steps]), back_w = load(L.w[steps]);
     const __m256i back_i = load(L.i[steps]);
-    __m256 next_s[steps + 1], next_w[steps + 1];
+    __m256 next_s[steps + 1], next_w[steps + 1], next_g[steps + 1][3];
     __m256i next_i[steps + 1];
     next_s[0] = back_s, next_w[0] = back_w, next_i[0] = back_i;
+    for (int a = 0; a < 3; ++a) next_g[0][a] = load(L.grad[steps][a]);
     for (int j = 1; j <= steps; ++j) {
-      const __m256 s = sample8(sampler, values, L, _mm256_add_epi32(next_first, _mm256_set1_epi32(j)));
+      Cells8 cells;
+      const __m256 s = sample8(sampler, values, L, _mm256_add_epi32(next_first, _mm256_set1_epi32(j)), &cells);
       __m256i i;
       __m256 w;
       place8(axis, s, i, w);
       next_s[j] = _mm256_blendv_ps(s, back_s, beyond);
       next_w[j] = _mm256_blendv_ps(w, back_w, beyond);
       next_i[j] = blend(i, back_i, beyond);
+      if (shading) {
+        __m256 g[3];
+        gradient8(*shading, cells, g);
+        for (int a = 0; a < 3; ++a) next_g[j][a] = _mm256_blendv_ps(g[a], next_g[0][a], beyond);
+      }
     }
-    // Slab k of every lane looked up and composited front to back.
+    // Slab k of every lane looked up, lit (`sampled`: one normal, the mean
+    // of the samples' gradients) and composited front to back.
     __m256 v[4];
     blend8(table, L, v);
+    if (shading) {
+      __m256 mean[3], a, b;
+      const __m256 d[3] = {load(L.d[0]), load(L.d[1]), load(L.d[2])};
+      for (int c = 0; c < 3; ++c) {
+        mean[c] = load(L.grad[0][c]);
+        for (int j = 1; j <= steps; ++j) mean[c] = _mm256_add_ps(mean[c], load(L.grad[j][c]));
+        mean[c] = _mm256_mul_ps(mean[c], _mm256_set1_ps(1.0f / (steps + 1)));
+      }
+      terms8(*shading, mean, d, a, b);
+      for (int c = 0; c < 3; ++c) v[c] = _mm256_add_ps(_mm256_mul_ps(v[c], a), _mm256_mul_ps(b, v[3]));
+    }
     const __m256 T = load(L.T);
     store(L.r, _mm256_add_ps(load(L.r), _mm256_mul_ps(T, v[0])));
     store(L.g, _mm256_add_ps(load(L.g), _mm256_mul_ps(T, v[1])));
     store(L.b, _mm256_add_ps(load(L.b), _mm256_mul_ps(T, v[2])));
     store(L.T, _mm256_mul_ps(T, _mm256_sub_ps(one, v[3])));
     // Slab k + 1.
-    for (int j = 0; j <= steps; ++j) store(L.s[j], next_s[j]), store(L.w[j], next_w[j]), store(L.i[j], next_i[j]);
+    for (int j = 0; j <= steps; ++j) {
+      store(L.s[j], next_s[j]), store(L.w[j], next_w[j]), store(L.i[j], next_i[j]);
+      if (shading)
+        for (int a = 0; a < 3; ++a) store(L.grad[j][a], next_g[j][a]);
+    }
     store(L.entry, spot8<steps>(next_i, n8));
     store(L.k, k1);
   }
 }
 
 void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatLookup& table,
-                          const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out) {
-  volume.visit([&](auto values) { march_packet(volume, sampler, values.data(), table, tf, rays, h, leap, out); });
+                          const DiscreteTf& tf, const FloatShading* shading, const Ray* rays, double h,
+                          const Leap& leap, Rgba* out) {
+  volume.visit(
+      [&](auto values) { march_packet(volume, sampler, values.data(), table, tf, shading, rays, h, leap, out); });
 }
 
 void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler, const SecondOrderFloatLookup& table,
-                          const DiscreteTf& tf, const Ray* rays, double h, const Leap& leap, Rgba* out) {
-  volume.visit([&](auto values) { march_packet(volume, sampler, values.data(), table, tf, rays, h, leap, out); });
+                          const DiscreteTf& tf, const FloatShading* shading, const Ray* rays, double h,
+                          const Leap& leap, Rgba* out) {
+  volume.visit(
+      [&](auto values) { march_packet(volume, sampler, values.data(), table, tf, shading, rays, h, leap, out); });
 }
 
 // riemann's float path on 8 rays (march_riemann_float, float_riemann.hpp).
@@ -507,8 +545,6 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
   for (unsigned m = active; m; m &= m - 1) {
     const int l = __builtin_ctz(m);
     L.t0[l] = L.iv[l].t0, L.t1[l] = L.iv[l].t1;
-    L.d[0][l] = static_cast<float>(rays[l].dir.x), L.d[1][l] = static_cast<float>(rays[l].dir.y);
-    L.d[2][l] = static_cast<float>(rays[l].dir.z);
     L.n[l] = riemann_samples(L.iv[l], h);
   }
   const auto finish = [&](int l) {

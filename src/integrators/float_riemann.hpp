@@ -69,8 +69,7 @@ Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, 
   const long long n = riemann_samples(*iv, h);
   const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
   const float termination = static_cast<float>(leap.termination);
-  const FloatShading::Vector d = {static_cast<float>(ray.dir.x), static_cast<float>(ray.dir.y),
-                                  static_cast<float>(ray.dir.z)};
+  const FloatShading::Vector d = direction(ray);
   Float4 C = {0, 0, 0, 0};
   float T = 1;
   for (long long k = 0; k < n;) {

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "float_math.hpp"
+#include "vri/core/ray.hpp"
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/shading/lighting.hpp"
 #include "vri/volume/float_sampler.hpp"
@@ -65,5 +66,10 @@ class FloatShading {
   std::size_t sy_, sz_;
   float ka_, kd_, ks_, p_, flat_;
 };
+
+// A ray's direction in float, the d of the terms.
+inline FloatShading::Vector direction(const Ray& ray) {
+  return {static_cast<float>(ray.dir.x), static_cast<float>(ray.dir.y), static_cast<float>(ray.dir.z)};
+}
 
 }  // namespace vri::detail

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "float_march.hpp"
+#include "float_shading.hpp"
 #include "float_packet.hpp"
 #include "slab_policies.hpp"
 #include "vri/core/error.hpp"
@@ -36,7 +37,7 @@ Preint2Integrator::Preint2Integrator(const GridVolume& volume, const TransferFun
       tf_(tf, table_size),
       fast_(volume, ZeroOpacity(tf_, TableOrder::Second), fast, "preint2"),
       float_sampler_(volume),
-      packets_(!lighting.enabled && fast.float_math && detail::packets_fit(volume)) {
+      packets_(fast.float_math && (!lighting.enabled || lighting.mode == "sampled") && detail::packets_fit(volume)) {
   const auto make = make_second_order_builder(builder);
   if (lighting.enabled) {
     if (lighting.mode != "sampled" && lighting.mode != "interpolated")
@@ -47,8 +48,12 @@ Preint2Integrator::Preint2Integrator(const GridVolume& volume, const TransferFun
     weighted_.emplace(make->build_weighted(tf_, 2 * h_, iterations));
   else
     table_.emplace(make->build(tf_, 2 * h_, iterations));
-  if (!lighting.enabled && fast.float_math) float_table_.emplace(*table_);
+  if (fast.float_math && table_) float_table_.emplace(*table_);
+  if (fast.float_math && table_ && shader_)
+    float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
 }
+
+Preint2Integrator::~Preint2Integrator() = default;
 
 const SecondOrderTable& Preint2Integrator::table() const { return weighted_ ? weighted_->full : *table_; }
 
@@ -64,7 +69,8 @@ Rgba Preint2Integrator::integrate(const Ray& ray) const {
   }
   if (float_table_)
     return volume_.visit([&](auto values) {
-      return detail::march_float(volume_, float_sampler_, values.data(), *float_table_, tf_, ray, h_, leap);
+      return detail::march_float(volume_, float_sampler_, values.data(), *float_table_, tf_, float_shading_.get(), ray,
+                                 h_, leap);
     });
   const auto prefetch = [&](const auto& s) { prefetch_rows(*table_, s); };
   using Table = SecondOrderTable;
@@ -79,7 +85,8 @@ void Preint2Integrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
   if (packets_) {
     const detail::Leap leap{fast_.space(), fast_.termination()};
     for (; i + detail::kPacket <= n; i += detail::kPacket)
-      detail::march_preint2_packet(volume_, float_sampler_, *float_table_, tf_, rays + i, h_, leap, out + i);
+      detail::march_preint2_packet(volume_, float_sampler_, *float_table_, tf_, float_shading_.get(), rays + i, h_,
+                                   leap, out + i);
   }
   for (; i < n; ++i) out[i] = integrate(rays[i]);
 }

@@ -268,26 +268,31 @@ TEST(FastPath, EveryStorageTypeGivesTheBytesOfTheFloatVolume) {
   expect_storage_gives_float_bytes<std::int16_t>(250, -32000);  // negative and positive samples
 }
 
-// Lit riemann on its float path (float_shading.hpp): within 1e-4 of the lit
-// double path, its packets the bytes of its scalar march, skipping exact.
-TEST(FastPath, LitRiemannFloatPathAndPackets) {
+// The lit float paths (float_shading.hpp: riemann, and preint1 and preint2
+// in `sampled`): within 1e-4 of the lit double paths, their packets the
+// bytes of their scalar marches, skipping exact.
+TEST(FastPath, LitFloatPathsAndPackets) {
   for (const char* file : {"scenes/neghip_lit.json", "scenes/marschner_lobb_lit.json"}) {
     const Scene scene = small(file, 40);
-    const MethodSpec spec{.name = "riemann", .step = 0.5};
-    const Image fast = render_with(scene, spec, kSkip, scene.lighting);
-    const double worst = max_difference(fast, render_with(scene, spec, kSkipDouble, scene.lighting));
-    EXPECT_LE(worst, 1e-4) << file;
-    EXPECT_GT(worst, 0) << file;
-    expect_same_bytes(fast, render_with(scene, spec, kPlain, scene.lighting), std::string(file) + " skipping");
-    MethodSpec with_fast = spec;
-    with_fast.fast = kSkip;
-    const auto integrator = make_integrator(with_fast, scene.grid(), scene.transfer_function, scene.lighting);
-    const Camera camera(scene.camera);
-    Image single(camera.width(), camera.height());
-    for (int y = 0; y < camera.height(); ++y)
-      for (int x = 0; x < camera.width(); ++x) single.set(x, y, integrator->integrate(camera.ray(x, y)));
-    expect_same_bytes(render(camera, *integrator, {.threads = 1, .tile_size = 40}), single,
-                      std::string(file) + " packets");
+    Lighting lighting = scene.lighting;
+    lighting.mode = "sampled";
+    for (const char* name : {"riemann", "preint1", "preint2"}) {
+      const std::string what = std::string(name) + " " + file;
+      const MethodSpec spec{.name = name, .step = 0.5, .table_size = 64, .iterations = 16};
+      const Image fast = render_with(scene, spec, kSkip, lighting);
+      const double worst = max_difference(fast, render_with(scene, spec, kSkipDouble, lighting));
+      EXPECT_LE(worst, 1e-4) << what;
+      EXPECT_GT(worst, 0) << what;
+      expect_same_bytes(fast, render_with(scene, spec, kPlain, lighting), what + " skipping");
+      MethodSpec with_fast = spec;
+      with_fast.fast = kSkip;
+      const auto integrator = make_integrator(with_fast, scene.grid(), scene.transfer_function, lighting);
+      const Camera camera(scene.camera);
+      Image single(camera.width(), camera.height());
+      for (int y = 0; y < camera.height(); ++y)
+        for (int x = 0; x < camera.width(); ++x) single.set(x, y, integrator->integrate(camera.ray(x, y)));
+      expect_same_bytes(render(camera, *integrator, {.threads = 1, .tile_size = 40}), single, what + " packets");
+    }
   }
 }
 

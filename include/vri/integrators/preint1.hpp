@@ -18,6 +18,7 @@
 // run reads zero table entries. It may stop once T < termination. Unless
 // fast.float_math is off it works in float: unlit, the whole march
 // (float_march.hpp); lit, the scalar samples and (sampled) the table lookups.
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -34,6 +35,10 @@
 
 namespace vri {
 
+namespace detail {
+class FloatShading;  // src/integrators/float_shading.hpp
+}
+
 class Preint1Integrator final : public Integrator {
  public:
   // step in voxel units (1e-4 .. 1e4); the table has table_size entries a side
@@ -41,8 +46,9 @@ class Preint1Integrator final : public Integrator {
   // vri::Error for a lighting mode other than sampled or interpolated.
   Preint1Integrator(const GridVolume& volume, const TransferFunction& tf, double step, int table_size,
                     const std::string& builder, const Lighting& lighting = {}, const FastPath& fast = {});
+  ~Preint1Integrator() override;
   Rgba integrate(const Ray& ray) const override;
-  // Unlit on the float path, on a CPU with AVX2: packets of 8 neighbouring
+  // Unlit or `sampled` on the float path, on a CPU with AVX2: packets of 8 neighbouring
   // rays (float_packet.hpp), the same bytes as integrate.
   void integrate_row(const Ray* rays, int n, Rgba* out) const override;
   std::string_view name() const override { return "preint1"; }
@@ -60,6 +66,7 @@ class Preint1Integrator final : public Integrator {
   bool float_math_;
   FloatSampler float_sampler_;
   FloatLookup float_table_;
+  std::unique_ptr<detail::FloatShading> float_shading_;  // lit `sampled` on the float path
   bool packets_;  // integrate_row marches packets
 };
 

@@ -32,6 +32,7 @@
 // termination as in preint1. Unless fast.float_math is off, unlit preint2
 // works in float as preint1 does (float_march.hpp, SecondOrderFloatLookup),
 // on packets of 8 rays where the CPU has AVX2; lit, it stays in double.
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -48,6 +49,10 @@
 
 namespace vri {
 
+namespace detail {
+class FloatShading;  // src/integrators/float_shading.hpp
+}
+
 // The second-order builder a MethodSpec's `builder` selects: itself when it
 // names one (plain, fast), else fast (the first-order builders' names, such
 // as the default incremental, do not apply to order 2).
@@ -62,8 +67,9 @@ class Preint2Integrator final : public Integrator {
   Preint2Integrator(const GridVolume& volume, const TransferFunction& tf, double step, int table_size,
                     int iterations, const std::string& builder, const Lighting& lighting = {},
                     const FastPath& fast = {});
+  ~Preint2Integrator() override;
   Rgba integrate(const Ray& ray) const override;
-  // Unlit on the float path, on a CPU with AVX2: packets of 8 neighbouring
+  // Unlit or `sampled` on the float path, on a CPU with AVX2: packets of 8 neighbouring
   // rays (float_packet.hpp), the same bytes as integrate.
   void integrate_row(const Ray* rays, int n, Rgba* out) const override;
   std::string_view name() const override { return "preint2"; }
@@ -81,6 +87,7 @@ class Preint2Integrator final : public Integrator {
   detail::Skipping fast_;
   FloatSampler float_sampler_;
   std::optional<SecondOrderFloatLookup> float_table_;  // unlit on the float path
+  std::unique_ptr<detail::FloatShading> float_shading_;  // lit `sampled` on the float path
   bool packets_;                                       // integrate_row marches packets
 };
 
