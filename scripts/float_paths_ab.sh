@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # float_paths_ab.sh BUILD_DIR [REPEATS]: the float paths of riemann, preint1 and
-# preint2 (unlit, packets of 8 rays with AVX2) against their double paths
-# (--double), on neghip, engine and bonsai at 512x512, step 1, one thread.
+# preint2 (packets of 8 rays with AVX2) against their double paths (--double),
+# unlit on neghip, engine and bonsai, lit on neghip_lit and fuel_lit (in
+# `sampled` mode: a copy of the scene, deleted after), 512x512, step 1, one thread.
 # Each render REPEATS times (default 5), float and double interleaved; prints
 # the fastest render CPU time vri reports (not loading or building tables)
 # and the largest difference between the two images (docs/PERFORMANCE.md,
@@ -12,11 +13,14 @@ repeats=${2:-5}
 vri="$build/vri"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+trap 'rm -rf "$tmp" "$root"/scenes/.ab_*_sampled.json' EXIT
+for lit in neghip_lit fuel_lit; do  # beside the original: its paths are relative
+  sed 's/"interpolated"/"sampled"/' "$root/scenes/$lit.json" >"$root/scenes/.ab_${lit}_sampled.json"
+done
 cpu_ms() { grep -o "CPU [0-9.e-]* s" | awk '{printf "%.1f", $2 * 1000}'; }
 echo "| scene | method | double CPU ms | float CPU ms | double / float | max difference |"
 echo "|---|---|---|---|---|---|"
-for scene in neghip engine bonsai; do
+for scene in neghip engine bonsai .ab_neghip_lit_sampled .ab_fuel_lit_sampled; do
   for method in riemann preint1 preint2; do
     best_d=; best_f=
     for _ in $(seq "$repeats"); do
@@ -31,7 +35,9 @@ for scene in neghip engine bonsai; do
         fi
       done
     done
-    diff=$(python3 -c "import numpy as n; a=n.load('$tmp/double.npy'); b=n.load('$tmp/float.npy'); print('%.1e' % abs(a.astype(float)-b).max())")
-    echo "| $scene | $method | $best_d | $best_f | $(python3 -c "print('%.2f' % ($best_d / $best_f))") | $diff |"
+    diff=$(/usr/bin/python3 -c "import numpy as n; a=n.load('$tmp/double.npy'); b=n.load('$tmp/float.npy'); print('%.1e' % abs(a.astype(float)-b).max())")
+    label=${scene#.ab_}
+    [ "$label" != "$scene" ] && label="${label%_sampled} (sampled)"
+    echo "| $label | $method | $best_d | $best_f | $(python3 -c "print('%.2f' % ($best_d / $best_f))") | $diff |"
   done
 done

@@ -9,14 +9,14 @@
 //   it drops is at most T < termination in alpha, and T times the largest
 //   colour (1 for unlit colours) in each colour channel.
 // - float_math (riemann, preint1, preint2): sampling, classification or
-//   table lookups and compositing in float on the same sample positions
-//   (integrators/float_riemann.hpp, float_march.hpp), on packets of 8 rays
-//   with AVX2 (integrators/float_packet.hpp): riemann unlit and lit
-//   (float_shading.hpp), preint1 and preint2 unlit; lit preint1 has its
-//   scalar samples in float (both modes) and its table lookups too
-//   (`sampled`); lit preint2 stays in double. A pixel differs from the double
-//   path's by under 1e-4 per channel on the bundled scenes (tested). Off: the
-//   double path, the reference.
+//   table lookups, shading and compositing in float on the same sample
+//   positions (integrators/float_riemann.hpp, float_march.hpp,
+//   float_shading.hpp), on packets of 8 rays with AVX2
+//   (integrators/float_packet.hpp): unlit and lit, the pre-integrated
+//   methods in `sampled` mode; in `interpolated` mode preint1 has its scalar
+//   samples in float and preint2 stays in double. A pixel differs from the
+//   double path's by under 1e-4 per channel on the bundled scenes (tested).
+//   Off: the double path, the reference.
 #include <memory>
 #include <optional>
 #include <string>
