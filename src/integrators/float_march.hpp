@@ -28,22 +28,42 @@
 #include "vri/core/rgba.hpp"
 #include "vri/tables/float_lookup.hpp"
 #include "vri/tables/slab_integral.hpp"
+#include "vri/tables/weighted_tables.hpp"
 #include "vri/volume/float_sampler.hpp"
 
 namespace vri::detail {
 
-// A sample of a float march: the scalar and, lit, the gradient there.
+// How a float march lights its slabs (SPEC §5; docs/LIGHTING.md): unlit
+// (no shading), `sampled` (one normal per slab, the mean of its samples'
+// gradients, lighting the pre-integrated colour: lit_by) or `interpolated`
+// (the shading terms at each sample times the tables weighted toward it:
+// preint1's front and back tables, lit_weighted, Lum, Wilson & Ma 2004;
+// preint2's full, middle and back tables, lit_lagrange). The weighted tables
+// have the layout of the march's lookup table, so one spot serves them all.
+struct FloatLighting {
+  const FloatShading* shading = nullptr;         // null: unlit
+  std::array<const float*, 3> weighted = {};     // interpolated: the tables' data, front to back
+  bool interpolated() const { return weighted[0] != nullptr; }
+};
+
+// A sample of a float march: the scalar and, lit, the gradient there
+// (`sampled`) or the shading terms (`interpolated`).
 struct FloatSample {
   float s;
   FloatShading::Vector g;
+  FloatShading::Terms t;
 };
 template <class Value>
-FloatSample sample_at(const FloatSampler& sampler, const Value* values, const FloatShading* shading, Vec3 u) {
-  if (!shading) return {sampler.at(values, u), {}};
+FloatSample sample_at(const FloatSampler& sampler, const Value* values, const FloatLighting& lighting,
+                      const FloatShading::Vector& d, Vec3 u) {
+  if (!lighting.shading) return {sampler.at(values, u), {}, {}};
   const FloatSampler::Cell cell = sampler.cell(u);
-  return {FloatSampler::interpolate(corners_as_float(values + cell.offset, sampler.stride_y(), sampler.stride_z()),
-                                    cell.f),
-          shading->gradient(cell)};
+  FloatSample out{FloatSampler::interpolate(corners_as_float(values + cell.offset, sampler.stride_y(),
+                                                             sampler.stride_z()),
+                                            cell.f),
+                  lighting.shading->gradient(cell), {}};
+  if (lighting.interpolated()) out.t = lighting.shading->terms(out.g, d);
+  return out;
 }
 
 // The mean of a slab's gradients (its one normal in `sampled`), summed front
@@ -61,26 +81,75 @@ inline Float4 lit(const FloatShading::Terms& t, Float4 v) {
   return Float4{v[0] * t.a + t.b * v[3], v[1] * t.a + t.b * v[3], v[2] * t.a + t.b * v[3], v[3]};
 }
 
+// lit_weighted and lit_lagrange (vri/shading/lit_slab.hpp,
+// slab_policies.hpp) in float, the same operations in the same order.
+inline Float4 lit_weighted(const FloatShading::Terms& f, const FloatShading::Terms& b, Float4 front, Float4 back) {
+  const float specular = f.b * (front[3] - back[3]) + b.b * back[3];
+  Float4 out;
+  for (int c = 0; c < 3; ++c) out[c] = f.a * front[c] + b.a * back[c] + specular;
+  out[3] = front[3];
+  return out;
+}
+inline Float4 lit_lagrange(const std::array<FloatShading::Terms, 3>& t, Float4 full, Float4 middle, Float4 back) {
+  const float s_f = full[3] - middle[3] - back[3];
+  const float specular = t[0].b * s_f + t[1].b * middle[3] + t[2].b * back[3];
+  Float4 out;
+  for (int c = 0; c < 3; ++c) {
+    const float d_f = full[c] - middle[c] - back[c];
+    out[c] = t[0].a * d_f + t[1].a * middle[c] + t[2].a * back[c] + specular;
+  }
+  out[3] = full[3];
+  return out;
+}
+
+// A slab's colour and opacity from its table spot and samples, lit as
+// `lighting` says.
+template <class Lookup, std::size_t N>
+Float4 slab_colour(const Lookup& table, const typename Lookup::Spot& spot, const std::array<FloatSample, N>& p,
+                   const FloatLighting& lighting, const FloatShading::Vector& d) {
+  if (!lighting.shading) return table.blend(spot);
+  if (!lighting.interpolated()) {
+    std::array<FloatShading::Vector, N> g;
+    for (std::size_t i = 0; i < N; ++i) g[i] = p[i].g;
+    return lit(lighting.shading->terms(mean(g), d), table.blend(spot));
+  }
+  if constexpr (N == 2)
+    return lit_weighted(p[0].t, p[1].t, table.blend(spot, lighting.weighted[0]), table.blend(spot, lighting.weighted[1]));
+  else
+    return lit_lagrange({p[0].t, p[1].t, p[2].t}, table.blend(spot, lighting.weighted[0]),
+                        table.blend(spot, lighting.weighted[1]), table.blend(spot, lighting.weighted[2]));
+}
+
 // The end of a float march: the pixel (C, 1 - T) once T < termination, else
 // with the partial last slab from the front sample s_front (the first sample
 // of slab `full`) to the exit iv.t1 integrated exactly, as on the double path:
-// Steps linear sub-slabs of equal length; lit (`shading` not null), each
-// sub-slab lit by the mean of the gradients at its ends, as the double path's
-// `sampled` mode. `values`: the volume's typed samples (GridVolume::visit).
+// Steps linear sub-slabs of equal length, lit as on the double path: by the
+// mean of the gradients at their ends (`sampled`) or with their exactly
+// weighted integrals (`interpolated`, exact_weighted_slab, first order for
+// both orders). `values`: the volume's typed samples (GridVolume::visit).
 template <int Steps, class Value>
-Rgba finish_float(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf, const FloatShading* shading,
-                  const Ray& ray, const Interval& iv, long long full, double h, FloatSample front, float termination,
-                  Float4 C, float T) {
+Rgba finish_float(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf,
+                  const FloatLighting& lighting, const Ray& ray, const Interval& iv, long long full, double h,
+                  FloatSample front, float termination, Float4 C, float T) {
   const double t_rest = iv.t0 + full * Steps * h;
   const double sub = (iv.t1 - t_rest) / Steps;
   const FloatShading::Vector d = direction(ray);
   if (!(T < termination) && sub > 0)
     for (int i = 1; i <= Steps; ++i) {
       const FloatSample back =
-          sample_at(sampler, values, shading, sampler.grid(ray.at(i == Steps ? iv.t1 : t_rest + i * sub)));
-      const SlabRgba e = exact_slab(tf, front.s, back.s, sub);
-      Float4 v = {static_cast<float>(e.r), static_cast<float>(e.g), static_cast<float>(e.b), static_cast<float>(e.a)};
-      if (shading) v = lit(shading->terms(mean(std::array{front.g, back.g}), d), v);
+          sample_at(sampler, values, lighting, d, sampler.grid(ray.at(i == Steps ? iv.t1 : t_rest + i * sub)));
+      const auto float4 = [](const SlabRgba& e) {
+        return Float4{static_cast<float>(e.r), static_cast<float>(e.g), static_cast<float>(e.b),
+                      static_cast<float>(e.a)};
+      };
+      Float4 v;
+      if (lighting.interpolated()) {
+        const SlabWeights w = exact_weighted_slab(tf, front.s, back.s, sub);
+        v = lit_weighted(front.t, back.t, float4(w.front), float4(w.back));
+      } else {
+        v = float4(exact_slab(tf, front.s, back.s, sub));
+        if (lighting.shading) v = lit(lighting.shading->terms(mean(std::array{front.g, back.g}), d), v);
+      }
       C += T * Float4{v[0], v[1], v[2], 0};
       T *= 1 - v[3];
       front = back;
@@ -90,7 +159,7 @@ Rgba finish_float(const FloatSampler& sampler, const Value* values, const Discre
 
 template <class Lookup, class Value>
 Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Value* values, const Lookup& table,
-                 const DiscreteTf& tf, const FloatShading* shading, const Ray& ray, double h, const Leap& leap) {
+                 const DiscreteTf& tf, const FloatLighting& lighting, const Ray& ray, double h, const Leap& leap) {
   constexpr int steps = Lookup::kSteps;
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
@@ -101,11 +170,11 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Va
     typename Lookup::Place place;
   };
   using Slab = std::array<Point, steps + 1>;  // the slab's samples, front to back
+  const FloatShading::Vector d = direction(ray);
   const auto sample = [&](long long i) {
-    const FloatSample s = sample_at(sampler, values, shading, u0 + static_cast<double>(i) * du);
+    const FloatSample s = sample_at(sampler, values, lighting, d, u0 + static_cast<double>(i) * du);
     return Point{s, table.place(s.s)};
   };
-  const FloatShading::Vector d = direction(ray);
   // Samples 1 .. steps of slab k into p (p[0] is in hand).
   const auto fill = [&](Slab& p, long long k) {
     for (int i = 1; i <= steps; ++i) p[i] = sample(k * steps + i);
@@ -147,19 +216,16 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Va
       next.fill(p[steps]);
       if (k + 1 < full) fill(next, k + 1);
       const auto following = find(next);
-      Float4 v = table.blend(spot);
-      if (shading) {
-        std::array<FloatShading::Vector, steps + 1> g;
-        for (int i = 0; i <= steps; ++i) g[i] = p[i].sample.g;
-        v = lit(shading->terms(mean(g), d), v);
-      }
+      std::array<FloatSample, steps + 1> samples;
+      for (int i = 0; i <= steps; ++i) samples[i] = p[i].sample;
+      const Float4 v = slab_colour(table, spot, samples, lighting, d);
       C += T * v;
       T *= 1 - v[3];
       p = next;
       spot = following;
     }
   }
-  return finish_float<steps>(sampler, values, tf, shading, ray, *iv, full, h, p[0].sample, termination, C, T);
+  return finish_float<steps>(sampler, values, tf, lighting, ray, *iv, full, h, p[0].sample, termination, C, T);
 }
 
 }  // namespace vri::detail

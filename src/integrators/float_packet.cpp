@@ -62,7 +62,8 @@ struct Lanes : RayLanes {
   alignas(32) float s[Steps + 1][kPacket];
   alignas(32) int i[Steps + 1][kPacket];
   alignas(32) float w[Steps + 1][kPacket];
-  alignas(32) float grad[Steps + 1][3][kPacket];  // lit: the samples' gradients
+  alignas(32) float grad[Steps + 1][3][kPacket];  // `sampled`: the samples' gradients
+  alignas(32) float ta[Steps + 1][kPacket], tb[Steps + 1][kPacket];  // `interpolated`: their shading terms
   alignas(32) int entry[kPacket];  // the slab's spot (find): its first entry's offset
   double t_check[kPacket];
 };
@@ -244,10 +245,10 @@ VRI_AVX2 __m256i spot8(const __m256i (&i)[Steps + 1], __m256i n) {
   return _mm256_slli_epi32(e, 2);
 }
 
-// The slab lookups of the 8 lanes (FloatLookup::blend, SecondOrderFloatLookup::blend
-// with lanes as vectors, the same operations in the same order).
-VRI_AVX2 void blend8(const FloatLookup& table, const Lanes<1>& L, __m256 v[4]) {
-  const float* data = table.data();
+// The slab lookups of the 8 lanes in the table `data` of the lookup's layout
+// (FloatLookup::blend, SecondOrderFloatLookup::blend with lanes as vectors,
+// the same operations in the same order).
+VRI_AVX2 void blend8(const FloatLookup& table, const float* data, const Lanes<1>& L, __m256 v[4]) {
   const int row = 4 * table.size();
   __m256 e00[4], e01[4], e10[4], e11[4];
   corner(data, L.entry, 0, e00);
@@ -257,8 +258,7 @@ VRI_AVX2 void blend8(const FloatLookup& table, const Lanes<1>& L, __m256 v[4]) {
   const __m256 wf = load(L.w[0]), wb = load(L.w[1]);
   for (int c = 0; c < 4; ++c) v[c] = lerp(lerp(e00[c], e01[c], wb), lerp(e10[c], e11[c], wb), wf);
 }
-VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const Lanes<2>& L, __m256 v[4]) {
-  const float* data = table.data();
+VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const float* data, const Lanes<2>& L, __m256 v[4]) {
   const int row = static_cast<int>(table.row()), plane = static_cast<int>(table.plane());
   const __m256 wf = load(L.w[0]), wm = load(L.w[1]), wb = load(L.w[2]);
   __m256 c[2][2][4];  // along s_b at (f, m), f and m each 0 or 1
@@ -341,8 +341,59 @@ VRI_AVX2 void terms8(const FloatShading& shading, const __m256 g[3], const __m25
 
 // Slab k of the lanes in `bits` found anew, at a ray's entry or after a
 // leap: its samples k Steps .. (k + 1) Steps and its spot.
+// `interpolated` lighting of the 8 lanes' slabs: lit_weighted (first order)
+// and lit_lagrange (second order) of float_march.hpp with lanes as vectors,
+// the same operations in the same order.
+VRI_AVX2 void lit_interpolated8(const FloatLookup& table, const FloatLighting& lighting, const Lanes<1>& L,
+                                __m256 v[4]) {
+  __m256 front[4], back[4];
+  blend8(table, lighting.weighted[0], L, front);
+  blend8(table, lighting.weighted[1], L, back);
+  const __m256 fa = load(L.ta[0]), fb = load(L.tb[0]), ba = load(L.ta[1]), bb = load(L.tb[1]);
+  const __m256 specular =
+      _mm256_add_ps(_mm256_mul_ps(fb, _mm256_sub_ps(front[3], back[3])), _mm256_mul_ps(bb, back[3]));
+  for (int c = 0; c < 3; ++c)
+    v[c] = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(fa, front[c]), _mm256_mul_ps(ba, back[c])), specular);
+  v[3] = front[3];
+}
+VRI_AVX2 void lit_interpolated8(const SecondOrderFloatLookup& table, const FloatLighting& lighting,
+                                const Lanes<2>& L, __m256 v[4]) {
+  __m256 full[4], middle[4], back[4];
+  blend8(table, lighting.weighted[0], L, full);
+  blend8(table, lighting.weighted[1], L, middle);
+  blend8(table, lighting.weighted[2], L, back);
+  const __m256 s_f = _mm256_sub_ps(_mm256_sub_ps(full[3], middle[3]), back[3]);
+  const __m256 specular = _mm256_add_ps(
+      _mm256_add_ps(_mm256_mul_ps(load(L.tb[0]), s_f), _mm256_mul_ps(load(L.tb[1]), middle[3])),
+      _mm256_mul_ps(load(L.tb[2]), back[3]));
+  for (int c = 0; c < 3; ++c) {
+    const __m256 d_f = _mm256_sub_ps(_mm256_sub_ps(full[c], middle[c]), back[c]);
+    v[c] = _mm256_add_ps(_mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(load(L.ta[0]), d_f),
+                                                     _mm256_mul_ps(load(L.ta[1]), middle[c])),
+                                       _mm256_mul_ps(load(L.ta[2]), back[c])),
+                         specular);
+  }
+  v[3] = full[3];
+}
+
+// A lit sample's state: its gradient (`sampled`) or its shading terms
+// (`interpolated`), into the lanes of `m`.
+VRI_AVX2 void lit_sample(const FloatLighting& lighting, const Cells8& cells, const __m256 d[3], __m256 m,
+                         __m256 keep_g[3], __m256& keep_a, __m256& keep_b) {
+  __m256 g[3];
+  gradient8(*lighting.shading, cells, g);
+  if (lighting.interpolated()) {
+    __m256 a, b;
+    terms8(*lighting.shading, g, d, a, b);
+    keep_a = _mm256_blendv_ps(keep_a, a, m);
+    keep_b = _mm256_blendv_ps(keep_b, b, m);
+  } else {
+    for (int c = 0; c < 3; ++c) keep_g[c] = _mm256_blendv_ps(keep_g[c], g[c], m);
+  }
+}
+
 template <int Steps, class T>
-VRI_AVX2 void start_slab(const FloatSampler& sampler, const T* values, const FloatShading* shading,
+VRI_AVX2 void start_slab(const FloatSampler& sampler, const T* values, const FloatLighting& lighting,
                          const TableAxis8& axis, int n, Lanes<Steps>& L, unsigned bits) {
   const __m256 m = lane_mask(bits);
   const __m256i first = _mm256_mullo_epi32(load(L.k), _mm256_set1_epi32(Steps));
@@ -350,10 +401,12 @@ VRI_AVX2 void start_slab(const FloatSampler& sampler, const T* values, const Flo
   for (int j = 0; j <= Steps; ++j) {
     Cells8 cells;
     const __m256 s = sample8(sampler, values, L, _mm256_add_epi32(first, _mm256_set1_epi32(j)), &cells);
-    if (shading) {
-      __m256 g[3];
-      gradient8(*shading, cells, g);
-      for (int a = 0; a < 3; ++a) store(L.grad[j][a], _mm256_blendv_ps(load(L.grad[j][a]), g[a], m));
+    if (lighting.shading) {
+      __m256 g[3] = {load(L.grad[j][0]), load(L.grad[j][1]), load(L.grad[j][2])}, a = load(L.ta[j]), b = load(L.tb[j]);
+      const __m256 d[3] = {load(L.d[0]), load(L.d[1]), load(L.d[2])};
+      lit_sample(lighting, cells, d, m, g, a, b);
+      for (int c = 0; c < 3; ++c) store(L.grad[j][c], g[c]);
+      store(L.ta[j], a), store(L.tb[j], b);
     }
     __m256 w;
     place8(axis, s, i[j], w);
@@ -407,7 +460,7 @@ VRI_AVX2 void transfer8(const FloatTransferFunction& tf, __m256 s, __m256 v[4]) 
 template <class Lookup, class Value>
 __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, const FloatSampler& sampler,
                                                   const Value* values, const Lookup& table, const DiscreteTf& tf,
-                                                  const FloatShading* shading, const Ray* rays, double h,
+                                                  const FloatLighting& lighting, const Ray* rays, double h,
                                                   const Leap& leap, Rgba* out) {
   constexpr int steps = Lookup::kSteps;
   Lanes<steps> L{};  // lanes without a ray read cell 0 and entry 0
@@ -420,10 +473,10 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     L.full[l] = static_cast<int>(std::floor(L.iv[l].length() / (steps * h)));
     L.t_check[l] = -std::numeric_limits<double>::infinity();
   }
-  start_slab(sampler, values, shading, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
+  start_slab(sampler, values, lighting, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
   const auto finish = [&](int l) {
-    const FloatSample front{L.s[0][l], {L.grad[0][0][l], L.grad[0][1][l], L.grad[0][2][l]}};
-    out[l] = finish_float<steps>(sampler, values, tf, shading, rays[l], L.iv[l], L.full[l], h, front, termination,
+    const FloatSample front{L.s[0][l], {L.grad[0][0][l], L.grad[0][1][l], L.grad[0][2][l]}, {L.ta[0][l], L.tb[0][l]}};
+    out[l] = finish_float<steps>(sampler, values, tf, lighting, rays[l], L.iv[l], L.full[l], h, front, termination,
                                  Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
     active &= ~(1u << l);
   };
@@ -453,7 +506,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     for (unsigned m = active & ~before_stop; m; m &= m - 1)
       if (const int l = __builtin_ctz(m); head(l)) leapt |= 1u << l;
     if (leapt) {
-      start_slab(sampler, values, shading, axis, n, L, leapt);
+      start_slab(sampler, values, lighting, axis, n, L, leapt);
       for (unsigned m = leapt; m; m &= m - 1)  // leapt to the end: the partial slab from sample `full` Steps
         if (const int l = __builtin_ctz(m); L.k[l] == L.full[l]) finish(l);
     }
@@ -469,10 +522,13 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     const __m256i next_first = _mm256_mullo_epi32(k1, _mm256_set1_epi32(steps));
     const __m256 back_s = load(L.s[steps]), back_w = load(L.w[steps]);
     const __m256i back_i = load(L.i[steps]);
-    __m256 next_s[steps + 1], next_w[steps + 1], next_g[steps + 1][3];
-    __m256i next_i[steps + 1];
+    // (Zeroed first: GCC 12 cannot see that the loop below fills them, -Wmaybe-uninitialized.)
+    __m256 next_s[steps + 1]{}, next_w[steps + 1]{}, next_g[steps + 1][3]{}, next_a[steps + 1]{}, next_b[steps + 1]{};
+    __m256i next_i[steps + 1]{};
     next_s[0] = back_s, next_w[0] = back_w, next_i[0] = back_i;
     for (int a = 0; a < 3; ++a) next_g[0][a] = load(L.grad[steps][a]);
+    next_a[0] = load(L.ta[steps]), next_b[0] = load(L.tb[steps]);
+    const __m256 d[3] = {load(L.d[0]), load(L.d[1]), load(L.d[2])};
     for (int j = 1; j <= steps; ++j) {
       Cells8 cells;
       const __m256 s = sample8(sampler, values, L, _mm256_add_epi32(next_first, _mm256_set1_epi32(j)), &cells);
@@ -482,26 +538,29 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
       next_s[j] = _mm256_blendv_ps(s, back_s, beyond);
       next_w[j] = _mm256_blendv_ps(w, back_w, beyond);
       next_i[j] = blend(i, back_i, beyond);
-      if (shading) {
-        __m256 g[3];
-        gradient8(*shading, cells, g);
-        for (int a = 0; a < 3; ++a) next_g[j][a] = _mm256_blendv_ps(g[a], next_g[0][a], beyond);
+      for (int a = 0; a < 3; ++a) next_g[j][a] = next_g[0][a];  // past the last full slab the back
+      next_a[j] = next_a[0], next_b[j] = next_b[0];                 // sample's state stands in too
+      if (lighting.shading) {
+        const __m256 fresh = _mm256_xor_ps(beyond, _mm256_castsi256_ps(_mm256_set1_epi32(-1)));
+        lit_sample(lighting, cells, d, fresh, next_g[j], next_a[j], next_b[j]);
       }
     }
-    // Slab k of every lane looked up, lit (`sampled`: one normal, the mean
-    // of the samples' gradients) and composited front to back.
+    // Slab k of every lane looked up, lit (slab_colour) and composited front to back.
     __m256 v[4];
-    blend8(table, L, v);
-    if (shading) {
+    if (!lighting.shading) {
+      blend8(table, table.data(), L, v);
+    } else if (!lighting.interpolated()) {  // one normal, the mean of the samples' gradients
+      blend8(table, table.data(), L, v);
       __m256 mean[3], a, b;
-      const __m256 d[3] = {load(L.d[0]), load(L.d[1]), load(L.d[2])};
       for (int c = 0; c < 3; ++c) {
         mean[c] = load(L.grad[0][c]);
         for (int j = 1; j <= steps; ++j) mean[c] = _mm256_add_ps(mean[c], load(L.grad[j][c]));
         mean[c] = _mm256_mul_ps(mean[c], _mm256_set1_ps(1.0f / (steps + 1)));
       }
-      terms8(*shading, mean, d, a, b);
+      terms8(*lighting.shading, mean, d, a, b);
       for (int c = 0; c < 3; ++c) v[c] = _mm256_add_ps(_mm256_mul_ps(v[c], a), _mm256_mul_ps(b, v[3]));
+    } else {
+      lit_interpolated8(table, lighting, L, v);
     }
     const __m256 T = load(L.T);
     store(L.r, _mm256_add_ps(load(L.r), _mm256_mul_ps(T, v[0])));
@@ -511,8 +570,10 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     // Slab k + 1.
     for (int j = 0; j <= steps; ++j) {
       store(L.s[j], next_s[j]), store(L.w[j], next_w[j]), store(L.i[j], next_i[j]);
-      if (shading)
+      if (lighting.shading) {
         for (int a = 0; a < 3; ++a) store(L.grad[j][a], next_g[j][a]);
+        store(L.ta[j], next_a[j]), store(L.tb[j], next_b[j]);
+      }
     }
     store(L.entry, spot8<steps>(next_i, n8));
     store(L.k, k1);
@@ -520,17 +581,17 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
 }
 
 void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatLookup& table,
-                          const DiscreteTf& tf, const FloatShading* shading, const Ray* rays, double h,
+                          const DiscreteTf& tf, const FloatLighting& lighting, const Ray* rays, double h,
                           const Leap& leap, Rgba* out) {
   volume.visit(
-      [&](auto values) { march_packet(volume, sampler, values.data(), table, tf, shading, rays, h, leap, out); });
+      [&](auto values) { march_packet(volume, sampler, values.data(), table, tf, lighting, rays, h, leap, out); });
 }
 
 void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler, const SecondOrderFloatLookup& table,
-                          const DiscreteTf& tf, const FloatShading* shading, const Ray* rays, double h,
+                          const DiscreteTf& tf, const FloatLighting& lighting, const Ray* rays, double h,
                           const Leap& leap, Rgba* out) {
   volume.visit(
-      [&](auto values) { march_packet(volume, sampler, values.data(), table, tf, shading, rays, h, leap, out); });
+      [&](auto values) { march_packet(volume, sampler, values.data(), table, tf, lighting, rays, h, leap, out); });
 }
 
 // riemann's float path on 8 rays (march_riemann_float, float_riemann.hpp).

@@ -1,5 +1,5 @@
 #pragma once
-// Packets of rays for the float paths of riemann, preint1 and preint2, unlit and lit (pre-integrated: `sampled`) (issue 8;
+// Packets of rays for the float paths of riemann, preint1 and preint2, unlit and lit (issue 8;
 // docs/PERFORMANCE.md, "Interactive speed"): kPacket neighbouring rays
 // marched together with AVX2, one ray a lane. Each lane keeps its own sample
 // positions u0 + i du, leaps (its own macro-cell queries) and partial last
@@ -7,6 +7,7 @@
 // table axis, looked up and composited as 8-lane vectors with the operations
 // of march_float (float_march.hpp) in the same order, and no FMA (the kernel
 // is compiled for AVX2 alone): the same bytes, ray by ray.
+#include "float_march.hpp"
 #include "float_shading.hpp"
 #include "ray_steps.hpp"
 #include "vri/core/ray.hpp"
@@ -27,12 +28,12 @@ inline constexpr int kPacket = 8;
 bool packets_fit(const GridVolume& volume);
 
 // out[i] = march_float(..., table, ..., rays[i], ...) for i < kPacket.
-// `shading`: null unlit, else `sampled` lighting (float_shading.hpp).
+// `lighting`: unlit, sampled or interpolated (float_march.hpp).
 void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatLookup& table,
-                          const DiscreteTf& tf, const FloatShading* shading, const Ray* rays, double h,
+                          const DiscreteTf& tf, const FloatLighting& lighting, const Ray* rays, double h,
                           const Leap& leap, Rgba* out);
 void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler, const SecondOrderFloatLookup& table,
-                          const DiscreteTf& tf, const FloatShading* shading, const Ray* rays, double h,
+                          const DiscreteTf& tf, const FloatLighting& lighting, const Ray* rays, double h,
                           const Leap& leap, Rgba* out);
 // out[i] = march_riemann_float(..., rays[i], ...) for i < kPacket (float_riemann.hpp).
 // `shading`: null unlit (float_shading.hpp).

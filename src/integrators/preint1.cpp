@@ -21,33 +21,42 @@ Preint1Integrator::Preint1Integrator(const GridVolume& volume, const TransferFun
       float_math_(fast.float_math),
       float_sampler_(volume),
       float_table_(table_),
-      packets_(float_math_ && (!lighting.enabled || lighting.mode == "sampled") && detail::packets_fit(volume)) {
+      packets_(float_math_ && detail::packets_fit(volume)) {
   if (!lighting.enabled) return;
   if (lighting.mode != "sampled" && lighting.mode != "interpolated")
     throw Error("preint1: lighting mode must be sampled or interpolated, got '" + lighting.mode + "'");
   shader_.emplace(lighting, volume);
   if (lighting.mode == "interpolated") weighted_.emplace(build_weighted_tables(tf_, h_));
-  else if (float_math_) float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
+  if (float_math_) float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
 }
 
 Preint1Integrator::~Preint1Integrator() = default;
+
+namespace {
+
+// The float march's lighting: none, sampled, or interpolated with the
+// weighted tables (front, back), which share the unweighted table's layout.
+detail::FloatLighting float_lighting(const detail::FloatShading* shading, const std::optional<WeightedTables>& w) {
+  detail::FloatLighting out{shading, {}};
+  if (w) out.weighted = {w->front.data().data(), w->back.data().data(), nullptr};
+  return out;
+}
+
+}  // namespace
 
 Rgba Preint1Integrator::integrate(const Ray& ray) const {
   using detail::march_uniform_slabs;
   using Table = PreintegrationTable;
   const detail::Leap leap{fast_.space(), fast_.termination()};
   const detail::NoPrefetch none;
-  if (weighted_ && float_math_)
-    return march_uniform_slabs<2>(volume_, ray, h_, slabs::Interpolated1{{tf_, *shader_, ray.dir}, *weighted_}, none,
-                                  leap, detail::FloatScalar{float_sampler_});
+  if (float_math_)
+    return volume_.visit([&](auto values) {
+      return detail::march_float(volume_, float_sampler_, values.data(), float_table_, tf_,
+                                 float_lighting(float_shading_.get(), weighted_), ray, h_, leap);
+    });
   if (weighted_)
     return march_uniform_slabs<2>(volume_, ray, h_, slabs::Interpolated1{{tf_, *shader_, ray.dir}, *weighted_}, none,
                                   leap);
-  if (float_math_ && !weighted_)  // unlit or sampled
-    return volume_.visit([&](auto values) {
-      return detail::march_float(volume_, float_sampler_, values.data(), float_table_, tf_, float_shading_.get(), ray,
-                                 h_, leap);
-    });
   if (shader_)
     return march_uniform_slabs<2>(volume_, ray, h_, slabs::Sampled<2, Table>{table_, tf_, *shader_, ray.dir}, none,
                                   leap);
@@ -59,8 +68,8 @@ void Preint1Integrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
   if (packets_) {
     const detail::Leap leap{fast_.space(), fast_.termination()};
     for (; i + detail::kPacket <= n; i += detail::kPacket)
-      detail::march_preint1_packet(volume_, float_sampler_, float_table_, tf_, float_shading_.get(), rays + i, h_, leap,
-                                   out + i);
+      detail::march_preint1_packet(volume_, float_sampler_, float_table_, tf_,
+                                   float_lighting(float_shading_.get(), weighted_), rays + i, h_, leap, out + i);
   }
   for (; i < n; ++i) out[i] = integrate(rays[i]);
 }

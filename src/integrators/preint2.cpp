@@ -37,7 +37,7 @@ Preint2Integrator::Preint2Integrator(const GridVolume& volume, const TransferFun
       tf_(tf, table_size),
       fast_(volume, ZeroOpacity(tf_, TableOrder::Second), fast, "preint2"),
       float_sampler_(volume),
-      packets_(fast.float_math && (!lighting.enabled || lighting.mode == "sampled") && detail::packets_fit(volume)) {
+      packets_(fast.float_math && detail::packets_fit(volume)) {
   const auto make = make_second_order_builder(builder);
   if (lighting.enabled) {
     if (lighting.mode != "sampled" && lighting.mode != "interpolated")
@@ -48,18 +48,36 @@ Preint2Integrator::Preint2Integrator(const GridVolume& volume, const TransferFun
     weighted_.emplace(make->build_weighted(tf_, 2 * h_, iterations));
   else
     table_.emplace(make->build(tf_, 2 * h_, iterations));
-  if (fast.float_math && table_) float_table_.emplace(*table_);
-  if (fast.float_math && table_ && shader_)
-    float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
+  if (!fast.float_math) return;
+  float_table_.emplace(table());
+  if (shader_) float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
 }
 
 Preint2Integrator::~Preint2Integrator() = default;
+
+namespace {
+
+// The float march's lighting: none, sampled, or interpolated with the three
+// weighted tables (full, middle, back; the lookup reads full's layout).
+detail::FloatLighting float_lighting(const detail::FloatShading* shading,
+                                     const std::optional<SecondOrderWeightedTables>& w) {
+  detail::FloatLighting out{shading, {}};
+  if (w) out.weighted = {w->full.data(), w->middle.data(), w->back.data()};
+  return out;
+}
+
+}  // namespace
 
 const SecondOrderTable& Preint2Integrator::table() const { return weighted_ ? weighted_->full : *table_; }
 
 Rgba Preint2Integrator::integrate(const Ray& ray) const {
   using detail::march_uniform_slabs;
   const detail::Leap leap{fast_.space(), fast_.termination()};
+  if (float_table_)
+    return volume_.visit([&](auto values) {
+      return detail::march_float(volume_, float_sampler_, values.data(), *float_table_, tf_,
+                                 float_lighting(float_shading_.get(), weighted_), ray, h_, leap);
+    });
   if (weighted_) {
     const auto prefetch = [&](const auto& s) {
       for (const SecondOrderTable* t : {&weighted_->full, &weighted_->middle, &weighted_->back}) prefetch_rows(*t, s);
@@ -67,11 +85,6 @@ Rgba Preint2Integrator::integrate(const Ray& ray) const {
     return march_uniform_slabs<3>(volume_, ray, h_, slabs::Interpolated2{{tf_, *shader_, ray.dir}, *weighted_},
                                   prefetch, leap);
   }
-  if (float_table_)
-    return volume_.visit([&](auto values) {
-      return detail::march_float(volume_, float_sampler_, values.data(), *float_table_, tf_, float_shading_.get(), ray,
-                                 h_, leap);
-    });
   const auto prefetch = [&](const auto& s) { prefetch_rows(*table_, s); };
   using Table = SecondOrderTable;
   if (shader_)
@@ -85,8 +98,8 @@ void Preint2Integrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
   if (packets_) {
     const detail::Leap leap{fast_.space(), fast_.termination()};
     for (; i + detail::kPacket <= n; i += detail::kPacket)
-      detail::march_preint2_packet(volume_, float_sampler_, *float_table_, tf_, float_shading_.get(), rays + i, h_,
-                                   leap, out + i);
+      detail::march_preint2_packet(volume_, float_sampler_, *float_table_, tf_,
+                                   float_lighting(float_shading_.get(), weighted_), rays + i, h_, leap, out + i);
   }
   for (; i < n; ++i) out[i] = integrate(rays[i]);
 }

@@ -92,26 +92,11 @@ inline long long leap_target(const Leap& leap, const Ray& ray, const Interval& i
   return run.empty ? std::min(full, i / steps) : k;
 }
 
-// The scalar at a sample: GridVolume::sample, or FloatSampler's (preint1's
-// float path, float_march.hpp), bound to the volume's typed samples once per
-// ray (GridVolume::visit) so that no sample dispatches on the type.
-struct GridScalar {
-  template <class T>
-  auto bind(const GridVolume& volume, const T* values) const {
-    return [&volume, values](Vec3 p) { return volume.sample(values, p); };
-  }
-};
-struct FloatScalar {
-  const FloatSampler& sampler;
-  template <class T>
-  auto bind(const GridVolume&, const T* values) const {
-    return [&s = sampler, values](Vec3 p) { return static_cast<double>(s.at(values, s.grid(p))); };
-  }
-};
-
-template <int Samples, class Policy, class Prefetch, class Scalar>
-Rgba march_bound(const GridVolume& volume, const Ray& ray, double h, const Policy& policy, Prefetch&& prefetch,
-                 const Leap& leap, const Scalar& scalar) {
+// The march on the volume's typed samples `values` (GridVolume::visit, once
+// per ray, so that no sample dispatches on the type).
+template <int Samples, class Policy, class Prefetch, class Value>
+Rgba march_typed(const GridVolume& volume, const Ray& ray, double h, const Policy& policy, Prefetch&& prefetch,
+                 const Leap& leap, const Value* values) {
   static_assert(Samples >= 2);
   constexpr int steps = Samples - 1;
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
@@ -122,7 +107,7 @@ Rgba march_bound(const GridVolume& volume, const Ray& ray, double h, const Polic
   using Slab = std::array<Sample, Samples>;
   const auto sample_at = [&](double t) {
     const Vec3 p = ray.at(t);
-    return Sample{scalar(p), policy.at(p)};
+    return Sample{volume.sample(values, p), policy.at(p)};
   };
   const auto fill = [&](Slab& s, long long k) {
     for (int i = 1; i < Samples; ++i) s[i] = sample_at(iv->t0 + (k * steps + i) * h);
@@ -162,12 +147,11 @@ Rgba march_bound(const GridVolume& volume, const Ray& ray, double h, const Polic
   return acc.result();
 }
 
-template <int Samples, class Policy, class Prefetch = NoPrefetch, class Scalar = GridScalar>
+template <int Samples, class Policy, class Prefetch = NoPrefetch>
 Rgba march_uniform_slabs(const GridVolume& volume, const Ray& ray, double h, const Policy& policy,
-                         Prefetch&& prefetch = {}, const Leap& leap = {}, const Scalar& scalar = {}) {
-  return volume.visit([&](auto values) {
-    return march_bound<Samples>(volume, ray, h, policy, prefetch, leap, scalar.bind(volume, values.data()));
-  });
+                         Prefetch&& prefetch = {}, const Leap& leap = {}) {
+  return volume.visit(
+      [&](auto values) { return march_typed<Samples>(volume, ray, h, policy, prefetch, leap, values.data()); });
 }
 
 }  // namespace vri::detail

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <utility>
 #include <typeinfo>
 #include <vector>
 
@@ -268,16 +269,19 @@ TEST(FastPath, EveryStorageTypeGivesTheBytesOfTheFloatVolume) {
   expect_storage_gives_float_bytes<std::int16_t>(250, -32000);  // negative and positive samples
 }
 
-// The lit float paths (float_shading.hpp: riemann, and preint1 and preint2
-// in `sampled`): within 1e-4 of the lit double paths, their packets the
-// bytes of their scalar marches, skipping exact.
+// The lit float paths (float_shading.hpp, float_march.hpp: riemann, and
+// preint1 and preint2 in both modes): within 1e-4 of the lit double paths,
+// their packets the bytes of their scalar marches, skipping exact.
 TEST(FastPath, LitFloatPathsAndPackets) {
-  for (const char* file : {"scenes/neghip_lit.json", "scenes/marschner_lobb_lit.json"}) {
-    const Scene scene = small(file, 40);
-    Lighting lighting = scene.lighting;
-    lighting.mode = "sampled";
-    for (const char* name : {"riemann", "preint1", "preint2"}) {
-      const std::string what = std::string(name) + " " + file;
+  const std::pair<const char*, const char*> cases[] = {
+      {"riemann", "sampled"}, {"preint1", "sampled"}, {"preint1", "interpolated"},
+      {"preint2", "sampled"}, {"preint2", "interpolated"}};  // riemann has no modes
+  for (const char* file : {"scenes/neghip_lit.json", "scenes/marschner_lobb_lit.json"})
+    for (const auto& [name, mode] : cases) {
+      const Scene scene = small(file, 40);
+      Lighting lighting = scene.lighting;
+      lighting.mode = mode;
+      const std::string what = std::string(name) + " " + mode + " " + file;
       const MethodSpec spec{.name = name, .step = 0.5, .table_size = 64, .iterations = 16};
       const Image fast = render_with(scene, spec, kSkip, lighting);
       const double worst = max_difference(fast, render_with(scene, spec, kSkipDouble, lighting));
@@ -293,7 +297,6 @@ TEST(FastPath, LitFloatPathsAndPackets) {
         for (int x = 0; x < camera.width(); ++x) single.set(x, y, integrator->integrate(camera.ray(x, y)));
       expect_same_bytes(render(camera, *integrator, {.threads = 1, .tile_size = 40}), single, what + " packets");
     }
-  }
 }
 
 TEST(FastPath, SameBytesWithAnyThreadCount) {

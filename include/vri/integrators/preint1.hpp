@@ -16,8 +16,8 @@
 // FastPath (fast_path.hpp): the ray leaps over runs of empty macro cells from
 // sample to sample (whole steps, so on the same samples): every slab inside a
 // run reads zero table entries. It may stop once T < termination. Unless
-// fast.float_math is off it works in float: unlit, the whole march
-// (float_march.hpp); lit, the scalar samples and (sampled) the table lookups.
+// fast.float_math is off it works in float, unlit and lit in both modes
+// (float_march.hpp, float_shading.hpp), on packets of 8 rays with AVX2.
 #include <memory>
 #include <optional>
 #include <string>
@@ -48,7 +48,7 @@ class Preint1Integrator final : public Integrator {
                     const std::string& builder, const Lighting& lighting = {}, const FastPath& fast = {});
   ~Preint1Integrator() override;
   Rgba integrate(const Ray& ray) const override;
-  // Unlit or `sampled` on the float path, on a CPU with AVX2: packets of 8 neighbouring
+  // On the float path, on a CPU with AVX2: packets of 8 neighbouring
   // rays (float_packet.hpp), the same bytes as integrate.
   void integrate_row(const Ray* rays, int n, Rgba* out) const override;
   std::string_view name() const override { return "preint1"; }
@@ -66,7 +66,7 @@ class Preint1Integrator final : public Integrator {
   bool float_math_;
   FloatSampler float_sampler_;
   FloatLookup float_table_;
-  std::unique_ptr<detail::FloatShading> float_shading_;  // lit `sampled` on the float path
+  std::unique_ptr<detail::FloatShading> float_shading_;  // lit, on the float path
   bool packets_;  // integrate_row marches packets
 };
 

@@ -29,9 +29,9 @@
 // macro cells classified empty for second-order entries (ZeroOpacity with
 // TableOrder::Second: the parabola's overshoot stays in zero opacity) are
 // leapt over on the same samples, so the image keeps its bytes; early
-// termination as in preint1. Unless fast.float_math is off, unlit preint2
-// works in float as preint1 does (float_march.hpp, SecondOrderFloatLookup),
-// on packets of 8 rays where the CPU has AVX2; lit, it stays in double.
+// termination as in preint1. Unless fast.float_math is off, preint2 works in
+// float as preint1 does (float_march.hpp, SecondOrderFloatLookup), unlit and
+// lit in both modes, on packets of 8 rays where the CPU has AVX2.
 #include <memory>
 #include <optional>
 #include <string>
@@ -69,7 +69,7 @@ class Preint2Integrator final : public Integrator {
                     const FastPath& fast = {});
   ~Preint2Integrator() override;
   Rgba integrate(const Ray& ray) const override;
-  // Unlit or `sampled` on the float path, on a CPU with AVX2: packets of 8 neighbouring
+  // On the float path, on a CPU with AVX2: packets of 8 neighbouring
   // rays (float_packet.hpp), the same bytes as integrate.
   void integrate_row(const Ray* rays, int n, Rgba* out) const override;
   std::string_view name() const override { return "preint2"; }
@@ -86,8 +86,8 @@ class Preint2Integrator final : public Integrator {
   std::optional<HeadlightShader> shader_;              // when lit
   detail::Skipping fast_;
   FloatSampler float_sampler_;
-  std::optional<SecondOrderFloatLookup> float_table_;  // unlit on the float path
-  std::unique_ptr<detail::FloatShading> float_shading_;  // lit `sampled` on the float path
+  std::optional<SecondOrderFloatLookup> float_table_;  // on the float path
+  std::unique_ptr<detail::FloatShading> float_shading_;  // lit, on the float path
   bool packets_;                                       // integrate_row marches packets
 };
 

@@ -80,8 +80,11 @@ class FloatLookup {
   const float* data() const { return data_; }
   int size() const { return n_; }
   // Bilinear in the continuous indices of s_f and s_b: premultiplied (r, g, b, alpha).
-  Float4 blend(const Spot& spot) const {
-    const float* e = spot.entry;
+  Float4 blend(const Spot& spot) const { return blend(spot, data_); }
+  // The same spot in another table of this one's layout (the weighted
+  // tables of interpolated lighting).
+  Float4 blend(const Spot& spot, const float* table) const {
+    const float* e = table + (spot.entry - data_);
     const Float4 e00 = load_float4(e), e01 = load_float4(e + 4), e10 = load_float4(e + row_),
                  e11 = load_float4(e + row_ + 4);
     const Float4 front = e00 + spot.wb * (e01 - e00), back = e10 + spot.wb * (e11 - e10);

@@ -42,8 +42,11 @@ class SecondOrderFloatLookup {
     __builtin_prefetch(e + plane_ + row_);
     return {e, p[0].w, p[1].w, p[2].w};
   }
-  Float4 blend(const Spot& spot) const {
-    const float* e = spot.entry;
+  Float4 blend(const Spot& spot) const { return blend(spot, data_); }
+  // The same spot in another table of this one's layout (the weighted
+  // tables of interpolated lighting).
+  Float4 blend(const Spot& spot, const float* table) const {
+    const float* e = table + (spot.entry - data_);
     const auto along_b = [&](const float* at) {
       const Float4 lo = load_float4(at), hi = load_float4(at + 4);
       return lo + spot.wb * (hi - lo);
