@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # float_paths_ab.sh BUILD_DIR [REPEATS]: the float paths of riemann, preint1 and
 # preint2 (packets of 8 rays with AVX2) against their double paths (--double),
-# unlit on neghip, engine and bonsai, lit on neghip_lit and fuel_lit (in
-# `sampled` mode: a copy of the scene, deleted after), 512x512, step 1, one thread.
+# unlit on neghip, engine and bonsai, lit on neghip_lit and fuel_lit in both
+# modes (`interpolated` as the scenes say, `sampled` in a copy of the scene,
+# deleted after), 512x512, step 1, one thread.
 # Each render REPEATS times (default 5), float and double interleaved; prints
 # the fastest render CPU time vri reports (not loading or building tables)
 # and the largest difference between the two images (docs/PERFORMANCE.md,
@@ -20,7 +21,7 @@ done
 cpu_ms() { grep -o "CPU [0-9.e-]* s" | awk '{printf "%.1f", $2 * 1000}'; }
 echo "| scene | method | double CPU ms | float CPU ms | double / float | max difference |"
 echo "|---|---|---|---|---|---|"
-for scene in neghip engine bonsai .ab_neghip_lit_sampled .ab_fuel_lit_sampled; do
+for scene in neghip engine bonsai .ab_neghip_lit_sampled neghip_lit .ab_fuel_lit_sampled fuel_lit; do
   for method in riemann preint1 preint2; do
     best_d=; best_f=
     for _ in $(seq "$repeats"); do
@@ -37,7 +38,8 @@ for scene in neghip engine bonsai .ab_neghip_lit_sampled .ab_fuel_lit_sampled; d
     done
     diff=$(/usr/bin/python3 -c "import numpy as n; a=n.load('$tmp/double.npy'); b=n.load('$tmp/float.npy'); print('%.1e' % abs(a.astype(float)-b).max())")
     label=${scene#.ab_}
-    [ "$label" != "$scene" ] && label="${label%_sampled} (sampled)"
+    if [ "$label" != "$scene" ]; then label="${label%_sampled} (sampled)"
+    elif [ "${scene%_lit}" != "$scene" ]; then label="$scene (interpolated)"; fi
     echo "| $label | $method | $best_d | $best_f | $(python3 -c "print('%.2f' % ($best_d / $best_f))") | $diff |"
   done
 done

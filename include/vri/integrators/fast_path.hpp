@@ -12,11 +12,10 @@
 //   table lookups, shading and compositing in float on the same sample
 //   positions (integrators/float_riemann.hpp, float_march.hpp,
 //   float_shading.hpp), on packets of 8 rays with AVX2
-//   (integrators/float_packet.hpp): unlit and lit, the pre-integrated
-//   methods in `sampled` mode; in `interpolated` mode preint1 has its scalar
-//   samples in float and preint2 stays in double. A pixel differs from the
-//   double path's by under 1e-4 per channel on the bundled scenes (tested).
-//   Off: the double path, the reference.
+//   (integrators/float_packet.hpp): unlit and lit, in both lighting modes
+//   of the pre-integrated methods. A pixel differs from the double path's by
+//   under 1e-4 per channel on the bundled scenes (tested). Off: the double
+//   path, the reference.
 #include <memory>
 #include <optional>
 #include <string>
