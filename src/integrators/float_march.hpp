@@ -29,6 +29,7 @@
 #include "vri/tables/float_lookup.hpp"
 #include "vri/tables/slab_integral.hpp"
 #include "vri/tables/weighted_tables.hpp"
+#include "vri/shading/lit_slab.hpp"
 #include "vri/volume/float_sampler.hpp"
 
 namespace vri::detail {
@@ -67,8 +68,7 @@ FloatSample sample_at(const FloatSampler& sampler, const Value* values, const Fl
 }
 
 // The mean of a slab's gradients (its one normal in `sampled`), summed front
-// to back; and a pre-integrated slab lit with one normal's terms, lit_by in
-// float (vri/shading/lit_slab.hpp).
+// to back.
 template <std::size_t N>
 FloatShading::Vector mean(const std::array<FloatShading::Vector, N>& g) {
   FloatShading::Vector sum = g[0];
@@ -77,31 +77,6 @@ FloatShading::Vector mean(const std::array<FloatShading::Vector, N>& g) {
   for (int a = 0; a < 3; ++a) sum[a] = sum[a] * (1.0f / N);
   return sum;
 }
-inline Float4 lit(const FloatShading::Terms& t, Float4 v) {
-  return Float4{v[0] * t.a + t.b * v[3], v[1] * t.a + t.b * v[3], v[2] * t.a + t.b * v[3], v[3]};
-}
-
-// lit_weighted and lit_lagrange (vri/shading/lit_slab.hpp,
-// slab_policies.hpp) in float, the same operations in the same order.
-inline Float4 lit_weighted(const FloatShading::Terms& f, const FloatShading::Terms& b, Float4 front, Float4 back) {
-  const float specular = f.b * (front[3] - back[3]) + b.b * back[3];
-  Float4 out;
-  for (int c = 0; c < 3; ++c) out[c] = f.a * front[c] + b.a * back[c] + specular;
-  out[3] = front[3];
-  return out;
-}
-inline Float4 lit_lagrange(const std::array<FloatShading::Terms, 3>& t, Float4 full, Float4 middle, Float4 back) {
-  const float s_f = full[3] - middle[3] - back[3];
-  const float specular = t[0].b * s_f + t[1].b * middle[3] + t[2].b * back[3];
-  Float4 out;
-  for (int c = 0; c < 3; ++c) {
-    const float d_f = full[c] - middle[c] - back[c];
-    out[c] = t[0].a * d_f + t[1].a * middle[c] + t[2].a * back[c] + specular;
-  }
-  out[3] = full[3];
-  return out;
-}
-
 // A slab's colour and opacity from its table spot and samples, lit as
 // `lighting` says.
 template <class Lookup, std::size_t N>
@@ -111,12 +86,12 @@ Float4 slab_colour(const Lookup& table, const typename Lookup::Spot& spot, const
   if (!lighting.interpolated()) {
     std::array<FloatShading::Vector, N> g;
     for (std::size_t i = 0; i < N; ++i) g[i] = p[i].g;
-    return lit(lighting.shading->terms(mean(g), d), table.blend(spot));
+    return lit_by(lighting.shading->terms(mean(g), d), table.blend(spot));
   }
   if constexpr (N == 2)
     return lit_weighted(p[0].t, p[1].t, table.blend(spot, lighting.weighted[0]), table.blend(spot, lighting.weighted[1]));
   else
-    return lit_lagrange({p[0].t, p[1].t, p[2].t}, table.blend(spot, lighting.weighted[0]),
+    return lit_lagrange(std::array{p[0].t, p[1].t, p[2].t}, table.blend(spot, lighting.weighted[0]),
                         table.blend(spot, lighting.weighted[1]), table.blend(spot, lighting.weighted[2]));
 }
 
@@ -148,7 +123,7 @@ Rgba finish_float(const FloatSampler& sampler, const Value* values, const Discre
         v = lit_weighted(front.t, back.t, float4(w.front), float4(w.back));
       } else {
         v = float4(exact_slab(tf, front.s, back.s, sub));
-        if (lighting.shading) v = lit(lighting.shading->terms(mean(std::array{front.g, back.g}), d), v);
+        if (lighting.shading) v = lit_by(lighting.shading->terms(mean(std::array{front.g, back.g}), d), v);
       }
       C += T * Float4{v[0], v[1], v[2], 0};
       T *= 1 - v[3];

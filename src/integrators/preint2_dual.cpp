@@ -65,7 +65,7 @@ Rgba Preint2DualIntegrator::integrate(const Ray& ray) const {
         volume_, ray, [&](Vec3 p) { return shader_->at(p, ray.dir); },
         [&](const auto& f, const auto& m, const auto& b, double l) {
           const auto look = [&](const SecondOrderLengthTable& t) { return t.lookup(l, f.s, m.s, b.s); };
-          return slabs::lit_lagrange({f.state, m.state, b.state}, look(weighted_->full), look(weighted_->middle),
+          return slabs::lit_lagrange(std::array{f.state, m.state, b.state}, look(weighted_->full), look(weighted_->middle),
                                      look(weighted_->back));
         });
   if (shader_)

@@ -26,6 +26,7 @@ namespace vri::slabs {
 using Terms = HeadlightShader::Terms;
 using vri::lit_by;  // lit_slab.hpp, shared with the mesh methods
 using vri::lit_weighted;
+using vri::lit_lagrange;
 
 inline Rgba rgba(const SlabRgba& v) { return {v.r, v.g, v.b, v.a}; }
 
@@ -45,21 +46,6 @@ Vec3 mean_gradient(const std::array<Sample, N>& s) {
   return sum * (1.0 / N);
 }
 
-// Second-order interpolated lighting from the packed weighted tables
-// (second_order_weighted.hpp): full = (C, alpha), middle = (D_m, S_m),
-// back = (D_b, S_b), D_f = C - D_m - D_b, S_f = alpha - S_m - S_b;
-//   C_lit = sum_k a_k D_k + b_k S_k  (k = f, m, b),   alpha = alpha.
-inline Rgba lit_lagrange(const std::array<Terms, 3>& t, const Rgba& full, const Rgba& middle, const Rgba& back) {
-  const double s_f = full[3] - middle[3] - back[3];
-  const double specular = t[0].b * s_f + t[1].b * middle[3] + t[2].b * back[3];
-  Rgba out;
-  for (int c = 0; c < 3; ++c) {
-    const double d_f = full[c] - middle[c] - back[c];
-    out[c] = t[0].a * d_f + t[1].a * middle[c] + t[2].a * back[c] + specular;
-  }
-  out[3] = full[3];
-  return out;
-}
 
 // No lighting: the pre-integrated colour as it is (Engel et al. 2001; El
 // Hajjar et al. 2008).
@@ -119,7 +105,7 @@ struct Interpolated1 : InterpolatedBase {
 struct Interpolated2 : InterpolatedBase {
   const SecondOrderWeightedTables& tables;
   Rgba slab(const std::array<Sample, 3>& s) const {
-    return lit_lagrange({s[0].state, s[1].state, s[2].state}, lookup(tables.full, s), lookup(tables.middle, s),
+    return lit_lagrange(std::array{s[0].state, s[1].state, s[2].state}, lookup(tables.full, s), lookup(tables.middle, s),
                         lookup(tables.back, s));
   }
 };
