@@ -183,8 +183,7 @@ TEST(FastPath, TerminationChangesAPixelByAtMostItsThreshold) {
 }
 
 // The float paths of riemann, preint1 and preint2 (float_riemann.hpp,
-// float_march.hpp; lit preint1:
-// ray_steps.hpp's FloatScalar) against their double paths, the reference:
+// float_march.hpp, lit: float_shading.hpp) against their double paths, the reference:
 // within 1e-4 per channel on the bundled scenes (neghip at two steps), lit or
 // not, and not the same image (the float path is the one taken).
 TEST(FastPath, FloatPathIsWithin1e4OfTheDoublePath) {
