@@ -1,8 +1,8 @@
 #pragma once
 // The float paths of preint1 and preint2 (issue 8; docs/PERFORMANCE.md,
-// "Interactive speed"): march_uniform_slabs with the Unlit policy
-// (ray_steps.hpp, slab_policies.hpp) on the same sample positions, with the
-// per-sample work in float. Sample i sits at grid position u0 + i du (u0 the
+// "Interactive speed"): march_uniform_slabs with the slab policies
+// (ray_steps.hpp, slab_policies.hpp: unlit, sampled, interpolated) on the
+// same sample positions, with the per-sample work in float. Sample i sits at grid position u0 + i du (u0 the
 // ray's entry, du = h dir / spacing, in double: one multiply-add per axis, the
 // same point whether the ray got there step by step or by a leap), is
 // interpolated by FloatSampler and placed on the table axis once; each slab
@@ -26,10 +26,10 @@
 #include "ray_steps.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/core/rgba.hpp"
+#include "vri/shading/lit_slab.hpp"
 #include "vri/tables/float_lookup.hpp"
 #include "vri/tables/slab_integral.hpp"
 #include "vri/tables/weighted_tables.hpp"
-#include "vri/shading/lit_slab.hpp"
 #include "vri/volume/float_sampler.hpp"
 
 namespace vri::detail {
@@ -77,22 +77,24 @@ FloatShading::Vector mean(const std::array<FloatShading::Vector, N>& g) {
   for (int a = 0; a < 3; ++a) sum[a] = sum[a] * (1.0f / N);
   return sum;
 }
-// A slab's colour and opacity from its table spot and samples, lit as
-// `lighting` says.
-template <class Lookup, std::size_t N>
-Float4 slab_colour(const Lookup& table, const typename Lookup::Spot& spot, const std::array<FloatSample, N>& p,
+// A slab's colour and opacity from its table spot and its samples p (each
+// p[i].sample a FloatSample, front to back), lit as `lighting` says.
+template <class Lookup, class Point, std::size_t N>
+Float4 slab_colour(const Lookup& table, const typename Lookup::Spot& spot, const std::array<Point, N>& p,
                    const FloatLighting& lighting, const FloatShading::Vector& d) {
   if (!lighting.shading) return table.blend(spot);
   if (!lighting.interpolated()) {
     std::array<FloatShading::Vector, N> g;
-    for (std::size_t i = 0; i < N; ++i) g[i] = p[i].g;
+    for (std::size_t i = 0; i < N; ++i) g[i] = p[i].sample.g;
     return lit_by(lighting.shading->terms(mean(g), d), table.blend(spot));
   }
   if constexpr (N == 2)
-    return lit_weighted(p[0].t, p[1].t, table.blend(spot, lighting.weighted[0]), table.blend(spot, lighting.weighted[1]));
+    return lit_weighted(p[0].sample.t, p[1].sample.t, table.blend(spot, lighting.weighted[0]),
+                        table.blend(spot, lighting.weighted[1]));
   else
-    return lit_lagrange(std::array{p[0].t, p[1].t, p[2].t}, table.blend(spot, lighting.weighted[0]),
-                        table.blend(spot, lighting.weighted[1]), table.blend(spot, lighting.weighted[2]));
+    return lit_lagrange(std::array{p[0].sample.t, p[1].sample.t, p[2].sample.t},
+                        table.blend(spot, lighting.weighted[0]), table.blend(spot, lighting.weighted[1]),
+                        table.blend(spot, lighting.weighted[2]));
 }
 
 // The end of a float march: the pixel (C, 1 - T) once T < termination, else
@@ -191,9 +193,7 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Va
       next.fill(p[steps]);
       if (k + 1 < full) fill(next, k + 1);
       const auto following = find(next);
-      std::array<FloatSample, steps + 1> samples;
-      for (int i = 0; i <= steps; ++i) samples[i] = p[i].sample;
-      const Float4 v = slab_colour(table, spot, samples, lighting, d);
+      const Float4 v = slab_colour(table, spot, p, lighting, d);
       C += T * v;
       T *= 1 - v[3];
       p = next;

@@ -272,7 +272,7 @@ VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const float* data, con
   for (int ch = 0; ch < 4; ++ch) v[ch] = lerp(lerp(c[0][0][ch], c[0][1][ch], wm), lerp(c[1][0][ch], c[1][1][ch], wm), wf);
 }
 
-// exp_neg (float_riemann.hpp) on 8 lanes, the same operations in the same order.
+// exp_neg (float_math.hpp) on 8 lanes, the same operations in the same order.
 VRI_AVX2 __m256 exp_neg8(__m256 x) {
   using namespace exp_poly;
   const __m256 y = _mm256_max_ps(_mm256_xor_ps(x, _mm256_set1_ps(-0.0f)), _mm256_set1_ps(kMin));
@@ -339,8 +339,6 @@ VRI_AVX2 void terms8(const FloatShading& shading, const __m256 g[3], const __m25
   b = _mm256_and_ps(_mm256_mul_ps(_mm256_set1_ps(shading.ks()), power), normal);
 }
 
-// Slab k of the lanes in `bits` found anew, at a ray's entry or after a
-// leap: its samples k Steps .. (k + 1) Steps and its spot.
 // `interpolated` lighting of the 8 lanes' slabs: lit_weighted (first order)
 // and lit_lagrange (second order) of float_march.hpp with lanes as vectors,
 // the same operations in the same order.
@@ -392,6 +390,8 @@ VRI_AVX2 void lit_sample(const FloatLighting& lighting, const Cells8& cells, con
   }
 }
 
+// Slab k of the lanes in `bits` found anew, at a ray's entry or after a
+// leap: its samples k Steps .. (k + 1) Steps and its spot.
 template <int Steps, class T>
 VRI_AVX2 void start_slab(const FloatSampler& sampler, const T* values, const FloatLighting& lighting,
                          const TableAxis8& axis, int n, Lanes<Steps>& L, unsigned bits) {

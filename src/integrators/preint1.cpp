@@ -1,8 +1,8 @@
 #include "vri/integrators/preint1.hpp"
 
 #include "float_march.hpp"
-#include "float_shading.hpp"
 #include "float_packet.hpp"
+#include "float_shading.hpp"
 #include "slab_policies.hpp"
 #include "vri/core/error.hpp"
 #include "vri/tables/slab_integral.hpp"

@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "float_march.hpp"
-#include "float_shading.hpp"
 #include "float_packet.hpp"
+#include "float_shading.hpp"
 #include "slab_policies.hpp"
 #include "vri/core/error.hpp"
 

@@ -20,7 +20,8 @@ RiemannIntegrator::RiemannIntegrator(const GridVolume& volume, const TransferFun
       float_tf_(tf),
       packets_(float_path_ && detail::packets_fit(volume)) {
   if (lighting.enabled) shader_.emplace(lighting, volume);
-  if (lighting.enabled && float_path_) float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
+  if (lighting.enabled && float_path_)
+    float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
   if (!(step >= 1e-4 && step <= 1e4))
     throw Error("riemann: step must be in [1e-4, 1e4] voxel units, got " + std::to_string(step));
   h_ = step * volume.voxel_unit();
@@ -41,8 +42,7 @@ template <class Value>
 Rgba RiemannIntegrator::march(const Ray& ray, const Value* values) const {
   const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
   if (!iv) return {0, 0, 0, 0};
-  const double len = iv->length();
-  const long long n = std::max(1LL, static_cast<long long>(std::ceil(len / h_)));
+  const long long n = detail::riemann_samples(*iv, h_);
   double T = 1, C[3] = {0, 0, 0};
   const EmptySpace* space = fast_.space();
   double t_check = -std::numeric_limits<double>::infinity();  // in a non-empty macro cell until then

@@ -46,7 +46,6 @@ Vec3 mean_gradient(const std::array<Sample, N>& s) {
   return sum * (1.0 / N);
 }
 
-
 // No lighting: the pre-integrated colour as it is (Engel et al. 2001; El
 // Hajjar et al. 2008).
 template <int Samples, class Table>
@@ -105,8 +104,8 @@ struct Interpolated1 : InterpolatedBase {
 struct Interpolated2 : InterpolatedBase {
   const SecondOrderWeightedTables& tables;
   Rgba slab(const std::array<Sample, 3>& s) const {
-    return lit_lagrange(std::array{s[0].state, s[1].state, s[2].state}, lookup(tables.full, s), lookup(tables.middle, s),
-                        lookup(tables.back, s));
+    return lit_lagrange(std::array{s[0].state, s[1].state, s[2].state}, lookup(tables.full, s),
+                        lookup(tables.middle, s), lookup(tables.back, s));
   }
 };
 

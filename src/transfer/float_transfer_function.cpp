@@ -8,16 +8,14 @@ namespace vri {
 FloatTransferFunction::FloatTransferFunction(const TransferFunction& tf) {
   for (double b : tf.breakpoints()) breakpoints_.push_back(static_cast<float>(b));
   breakpoints_.push_back(std::numeric_limits<float>::infinity());
+  const auto channels = [](const TfSample& v) { return std::array{v.r, v.g, v.b, v.tau}; };
   for (const TfSegment& seg : tf.segments()) {
     s_ref_.push_back(static_cast<float>(seg.s_ref));
-    r_.push_back(static_cast<float>(seg.ref.r));
-    g_.push_back(static_cast<float>(seg.ref.g));
-    b_.push_back(static_cast<float>(seg.ref.b));
-    tau_.push_back(static_cast<float>(seg.ref.tau));
-    dr_.push_back(static_cast<float>(seg.slope.r));
-    dg_.push_back(static_cast<float>(seg.slope.g));
-    db_.push_back(static_cast<float>(seg.slope.b));
-    dtau_.push_back(static_cast<float>(seg.slope.tau));
+    const auto ref = channels(seg.ref), slope = channels(seg.slope);
+    for (int c = 0; c < 4; ++c) {
+      value_[c].push_back(static_cast<float>(ref[c]));
+      slope_[c].push_back(static_cast<float>(slope[c]));
+    }
   }
   const float span = breakpoints_[breakpoints_.size() - 2] - breakpoints_.front();
   lo_ = breakpoints_.front();
@@ -31,16 +29,6 @@ FloatTransferFunction::FloatTransferFunction(const TransferFunction& tf) {
     first_[k] = static_cast<int>(std::upper_bound(breakpoints_.begin(), breakpoints_.begin() + n, start) -
                                  breakpoints_.begin());
   }
-}
-
-const float* FloatTransferFunction::value(int channel) const {
-  const std::vector<float>* v[4] = {&r_, &g_, &b_, &tau_};
-  return v[channel]->data();
-}
-
-const float* FloatTransferFunction::slope(int channel) const {
-  const std::vector<float>* v[4] = {&dr_, &dg_, &db_, &dtau_};
-  return v[channel]->data();
 }
 
 }  // namespace vri

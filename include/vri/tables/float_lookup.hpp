@@ -57,7 +57,7 @@ class FloatLookup {
  public:
   static constexpr int kSteps = 1;  // a slab is one step: front and back samples
   explicit FloatLookup(const PreintegrationTable& table)
-      : axis_(table.axis()), data_(table.data().data()), n_(table.size()), row_(4 * static_cast<std::size_t>(n_)) {}
+      : axis_(table.axis()), data_(table.data().data()), row_(4 * static_cast<std::size_t>(axis_.size())) {}
 
   using Place = FloatAxis::Place;
   Place place(float s) const { return axis_.place(s); }
@@ -69,7 +69,7 @@ class FloatLookup {
     float wf, wb;
   };
   Spot find(Place front, Place back) const {
-    const float* e = data_ + 4 * (static_cast<std::size_t>(front.i) * n_ + back.i);
+    const float* e = data_ + 4 * (static_cast<std::size_t>(front.i) * axis_.size() + back.i);
     __builtin_prefetch(e);
     __builtin_prefetch(e + row_);
     return {e, front.w, back.w};
@@ -78,7 +78,7 @@ class FloatLookup {
   // What `place` and `find` read, for the ray packets (src/integrators/float_packet.cpp).
   const FloatAxis& axis() const { return axis_; }
   const float* data() const { return data_; }
-  int size() const { return n_; }
+  int size() const { return axis_.size(); }
   // Bilinear in the continuous indices of s_f and s_b: premultiplied (r, g, b, alpha).
   Float4 blend(const Spot& spot) const { return blend(spot, data_); }
   // The same spot in another table of this one's layout (the weighted
@@ -100,7 +100,6 @@ class FloatLookup {
  private:
   FloatAxis axis_;
   const float* data_;
-  int n_;
   std::size_t row_;  // floats per table row
 };
 

@@ -21,9 +21,8 @@ class SecondOrderFloatLookup {
   explicit SecondOrderFloatLookup(const SecondOrderTable& table)
       : axis_(table.axis()),
         data_(table.data()),
-        n_(table.size()),
-        row_(4 * static_cast<std::size_t>(n_)),
-        plane_(row_ * static_cast<std::size_t>(n_)) {}
+        row_(4 * static_cast<std::size_t>(axis_.size())),
+        plane_(row_ * static_cast<std::size_t>(axis_.size())) {}
 
   using Place = FloatAxis::Place;
   Place place(float s) const { return axis_.place(s); }
@@ -60,7 +59,7 @@ class SecondOrderFloatLookup {
   // What `place` and `find` read, for the ray packets (src/integrators/float_packet.cpp).
   const FloatAxis& axis() const { return axis_; }
   const float* data() const { return data_; }
-  int size() const { return n_; }
+  int size() const { return axis_.size(); }
   // Floats from entry (f, m, b) to (f, m + 1, b) and to (f + 1, m, b).
   std::size_t row() const { return row_; }
   std::size_t plane() const { return plane_; }
@@ -71,7 +70,6 @@ class SecondOrderFloatLookup {
  private:
   FloatAxis axis_;
   const float* data_;
-  int n_;
   std::size_t row_, plane_;  // floats per (s_f, s_m) row and per s_f plane
 };
 

@@ -9,6 +9,7 @@
 // Exact where a segment is zero: a scalar in a zero-opacity run gets tau = 0
 // exactly, so empty-space skipping stays exact on this path.
 #include <algorithm>
+#include <array>
 #include <vector>
 
 #include "vri/transfer/transfer_function.hpp"
@@ -26,7 +27,8 @@ class FloatTransferFunction {
   Sample operator()(float s) const {
     const int i = segment(s);
     const float ds = s - s_ref_[i];
-    return {r_[i] + dr_[i] * ds, g_[i] + dg_[i] * ds, b_[i] + db_[i] * ds, tau_[i] + dtau_[i] * ds};
+    const auto at = [&](int c) { return value_[c][i] + slope_[c][i] * ds; };
+    return {at(0), at(1), at(2), at(3)};
   }
   // The number of breakpoints <= s.
   int segment(float s) const {
@@ -45,16 +47,17 @@ class FloatTransferFunction {
   float scale() const { return scale_; }
   const int* first() const { return first_.data(); }
   const float* breakpoints() const { return breakpoints_.data(); }
-  // Per segment: s_ref, the values there and their slopes.
+  // Per segment: s_ref, the values there and their slopes (channels r, g, b, tau).
   const float* s_ref() const { return s_ref_.data(); }
-  const float* value(int channel) const;
-  const float* slope(int channel) const;
+  const float* value(int channel) const { return value_[channel].data(); }
+  const float* slope(int channel) const { return slope_[channel].data(); }
 
  private:
   float lo_, scale_;
   std::vector<int> first_;          // per bin: a segment at or below those of its scalars
   std::vector<float> breakpoints_;  // ascending, then +inf
-  std::vector<float> s_ref_, r_, g_, b_, tau_, dr_, dg_, db_, dtau_;
+  std::vector<float> s_ref_;
+  std::array<std::vector<float>, 4> value_, slope_;  // per channel r, g, b, tau
 };
 
 }  // namespace vri
