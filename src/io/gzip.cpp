@@ -48,6 +48,12 @@ std::size_t gunzip_into(std::span<const std::byte> in, std::size_t skip, std::sp
       fail("gzip data expands beyond the expected " + std::to_string(out.size()) + " bytes");
     }
     if (rc == Z_OK && zs.avail_in == 0 && got == 0) fail("gzip data is truncated");
+    // Concatenated gzip members (`cat a.gz b.gz`, pigz, bgzip) form one
+    // stream, as gzip -d reads them; bytes after the last member are ignored.
+    if (rc == Z_STREAM_END && zs.avail_in >= 2 && zs.next_in[0] == 0x1f && zs.next_in[1] == 0x8b) {
+      if (inflateReset(&zs) != Z_OK) fail("zlib: cannot reset inflate");
+      rc = Z_OK;
+    }
   }
   inflateEnd(&zs);
   return written;

@@ -75,6 +75,47 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& fi
   return out;
 }
 
+// A whole-token integer in [lo, hi]; anything else (fractions, 1e300, junk)
+// is refused naming the field, instead of a wrapping or undefined cast.
+long long parse_integer(const std::string& text, const std::string& field, long long lo, long long hi) {
+  const std::string t = trim(text);
+  long long v = 0;
+  const auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (ec != std::errc() || p != t.data() + t.size() || t.empty() || v < lo || v > hi)
+    throw Error("NRRD field '" + field + "' must be an integer from " + std::to_string(lo) + " to " +
+                std::to_string(hi) + ", got '" + t + "'");
+  return v;
+}
+
+// Integers separated by spaces (the 'sizes' field).
+std::vector<std::int64_t> parse_integers(const std::string& text, const std::string& field, long long hi) {
+  std::vector<std::int64_t> out;
+  std::istringstream in(text);
+  for (std::string tok; in >> tok;) out.push_back(parse_integer(tok, field, 1, hi));
+  return out;
+}
+
+// The detached data file named by a header, resolved against the header's
+// folder; absolute paths and paths that leave that folder (.., symlinks) are
+// refused unless `allow_outside` (a header from a stranger must not read
+// arbitrary files).
+fs::path detached_data_path(const fs::path& header, const std::string& name, bool allow_outside, const std::string& where) {
+  const fs::path dir = header.parent_path().empty() ? fs::path(".") : header.parent_path();
+  if (name.empty()) throw Error(where + ": 'data file' is empty");
+  const fs::path named(name);
+  if (allow_outside) return named.is_absolute() ? named : dir / named;
+  const std::string refuse = where + ": 'data file: " + name +
+                             "' is outside the header's folder; set \"allow_outside_paths\": true in the "
+                             "scene's volume to allow it";
+  if (named.is_absolute() || *named.lexically_normal().begin() == "..") throw Error(refuse);
+  std::error_code ec;
+  const fs::path real_dir = fs::weakly_canonical(dir, ec), real = fs::weakly_canonical(dir / named, ec);
+  if (ec) return dir / named;  // missing: reported when it is opened
+  const fs::path rel = real.lexically_relative(real_dir);
+  if (rel.empty() || *rel.begin() == "..") throw Error(refuse);
+  return dir / named;
+}
+
 // Splits "(a,b,c) (d,e,f) none" into vectors (none -> empty).
 std::vector<std::vector<double>> parse_vectors(const std::string& text, const std::string& field) {
   std::vector<std::vector<double>> out;
@@ -97,7 +138,7 @@ std::vector<std::vector<double>> parse_vectors(const std::string& text, const st
 
 }  // namespace
 
-GridVolume read_nrrd(const fs::path& path) {
+GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
   const std::string where = "NRRD '" + path.string() + "'";
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot open '" + path.string() + "': " + std::strerror(errno));
@@ -133,19 +174,21 @@ GridVolume read_nrrd(const fs::path& path) {
   };
 
   const ScalarType type = nrrd_type(required("type"));
-  const int dimension = std::atoi(required("dimension").c_str());
-  const auto sizes_d = parse_numbers(required("sizes"), "sizes");
-  if (int(sizes_d.size()) != dimension) throw Error(where + ": 'sizes' does not match 'dimension'");
+  const auto checked = [&](auto&& f) {
+    try {
+      return f();
+    } catch (const Error& e) {
+      throw Error(where + ": " + e.what());
+    }
+  };
+  const int dimension = int(checked([&] { return parse_integer(required("dimension"), "dimension", 1, 16); }));
+  const auto sizes = checked([&] { return parse_integers(required("sizes"), "sizes", std::int64_t{1} << 40); });
+  if (int(sizes.size()) != dimension) throw Error(where + ": 'sizes' does not match 'dimension'");
   int skip_axes = 0;
-  if (dimension == 4 && sizes_d[0] == 1) skip_axes = 1;  // a scalar axis of one value
+  if (dimension == 4 && sizes[0] == 1) skip_axes = 1;  // a scalar axis of one value
   else if (dimension != 3) throw Error(where + " is " + std::to_string(dimension) + "D; vri reads 3D scalar volumes");
-  std::array<std::int64_t, 3> dims{};
-  for (int a = 0; a < 3; ++a) {
-    const double s = sizes_d[a + skip_axes];
-    if (!(s >= 1) || s != std::floor(s)) throw Error(where + ": bad size in 'sizes'");
-    dims[a] = static_cast<std::int64_t>(s);
-  }
-  const std::uint64_t n = GridVolume::checked_sample_count(dims);
+  const std::array<std::int64_t, 3> dims{sizes[skip_axes], sizes[skip_axes + 1], sizes[skip_axes + 2]};
+  const std::uint64_t n = checked([&] { return GridVolume::checked_sample_count(dims); });
 
   Vec3 spacing{1, 1, 1}, origin{0, 0, 0};
   if (const auto* sp = field({"spacings"})) {
@@ -176,9 +219,14 @@ GridVolume read_nrrd(const fs::path& path) {
     if (lower(*e) == "big") endian = Endian::Big;
     else if (lower(*e) != "little") throw Error(where + ": unknown endian '" + *e + "'");
   }
+  // byte skip -1 means "the data is the last bytes of the file" (raw only, per
+  // the NRRD spec); other negative skips are meaningless.
+  constexpr long long kMaxSkip = std::numeric_limits<long long>::max();
   long long byte_skip = 0, line_skip = 0;
-  if (const auto* b = field({"byte skip", "byteskip"})) byte_skip = std::atoll(b->c_str());
-  if (const auto* l = field({"line skip", "lineskip"})) line_skip = std::atoll(l->c_str());
+  if (const auto* b = field({"byte skip", "byteskip"}))
+    byte_skip = checked([&] { return parse_integer(*b, "byte skip", -1, kMaxSkip); });
+  if (const auto* l = field({"line skip", "lineskip"}))
+    line_skip = checked([&] { return parse_integer(*l, "line skip", 0, kMaxSkip); });
 
   // The data: attached after the header, or in a detached file; `start` is
   // its first byte, `size` the bytes from there to the end.
@@ -187,8 +235,7 @@ GridVolume read_nrrd(const fs::path& path) {
   if (const auto* df = field({"data file", "datafile"})) {
     if (df->rfind("LIST", 0) == 0 || df->find('%') != std::string::npos)
       throw Error(where + ": multi-file data ('" + *df + "') is not supported");
-    data_path = *df;
-    if (data_path.is_relative()) data_path = path.parent_path() / data_path;
+    data_path = detached_data_path(path, *df, options.allow_outside_paths, where);
     start = 0;
   }
   const std::uint64_t end = checked_file_size(data_path);
@@ -227,13 +274,23 @@ GridVolume read_nrrd(const fs::path& path) {
                       }), spacing, origin);
   }
   if (encoding == "gzip" || encoding == "gz") {
+    if (byte_skip < 0) throw Error(where + ": 'byte skip: -1' only works with raw encoding (NRRD spec)");
+    // deflate expands at most 1032:1: a header claiming more than the
+    // compressed bytes could hold is refused before the volume is allocated.
+    if ((need + std::uint64_t(byte_skip)) / 1032 > end - start)
+      throw Error(where + " declares " + std::to_string(need) + " data bytes, more than its " +
+                  std::to_string(end - start) + " gzip bytes can hold");
     const std::vector<std::byte> packed = rest();
     return GridVolume(idims, GridVolume::decode(type, endian, n, [&](std::span<std::byte> out) {
-                        const std::size_t got = gunzip_into(packed, std::max<long long>(byte_skip, 0), out);
+                        const std::size_t got = gunzip_into(packed, std::size_t(byte_skip), out);
                         if (got != need) throw wrong_size(got);
                       }), spacing, origin);
   }
   if (encoding == "ascii" || encoding == "text" || encoding == "txt") {
+    if (byte_skip != 0) throw Error(where + ": 'byte skip' does not apply to ascii encoding");
+    // Each value takes at least two bytes: refuse sizes the text cannot hold.
+    if (n > (end - start) / 2 + 1)
+      throw Error(where + " declares " + std::to_string(n) + " ascii values in " + std::to_string(end - start) + " bytes");
     const std::vector<std::byte> bytes = rest();
     const std::string text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     const auto v = parse_numbers(text, "data");

@@ -8,7 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "vri/core/checked_size.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/memory_limit.hpp"
 #include "vri/io/file_io.hpp"
 #include "vtk_values.hpp"
 
@@ -48,6 +50,12 @@ class Cursor {
       pos_ += count * vtk::num_size(type);
       return out;
     }
+    // Each ASCII value takes at least two bytes (a digit and a separator):
+    // a count the remaining bytes cannot hold is refused before allocating.
+    if (count > (bytes_.size() - pos_) / 2 + 1)
+      throw Error("data ends early: " + std::to_string(count) + " values declared, " +
+                  std::to_string(bytes_.size() - pos_) + " bytes left");
+    check_allocation(count, sizeof(double), "a mesh array of " + std::to_string(count) + " values");
     std::vector<double> out(count);
     for (std::size_t i = 0; i < count; ++i) {
       skip_space();
@@ -115,10 +123,11 @@ TetMesh parse(Cursor& in, const std::string& wanted) {
 
   // Skips or keeps one attribute array of n tuples of `comps` components.
   auto attribute = [&](const std::string& name, vtk::Num type, std::size_t comps) {
-    auto v = in.values(type, section_n * comps);
+    auto v = in.values(type, checked_product({section_n, comps}, "the declared array size"));
     if (section == Section::Point && comps == 1) point_arrays.emplace_back(name, std::move(v));
   };
   auto need = [](const std::vector<std::string>& w, std::size_t n) {
+    if (w.empty()) throw Error("the file ends where a line was expected");
     if (w.size() < n) throw Error("incomplete '" + w[0] + "' line");
   };
 
@@ -129,7 +138,7 @@ TetMesh parse(Cursor& in, const std::string& wanted) {
     if (key == "POINTS") {
       need(w, 3);
       n_points = count_of(w[1], "point");
-      xyz = in.values(num_of(w[2]), 3 * n_points);
+      xyz = in.values(num_of(w[2]), checked_product({3, n_points}, "the declared point count"));
     } else if (key == "CELLS") {
       need(w, 3);
       const std::size_t n = count_of(w[1], "cell"), size = count_of(w[2], "cell list");
@@ -171,10 +180,10 @@ TetMesh parse(Cursor& in, const std::string& wanted) {
       attribute(w[1], type, comps);
     } else if (section != Section::None && key == "LOOKUP_TABLE") {
       need(w, 3);
-      in.values(in.binary ? vtk::Num::UInt8 : vtk::Num::Float64, 4 * count_of(w[2], "table"));
+      in.values(in.binary ? vtk::Num::UInt8 : vtk::Num::Float64, checked_product({4, count_of(w[2], "table")}, "the declared table size"));
     } else if (section != Section::None && key == "COLOR_SCALARS") {
       need(w, 3);
-      in.values(in.binary ? vtk::Num::UInt8 : vtk::Num::Float64, section_n * count_of(w[2], "component"));
+      in.values(in.binary ? vtk::Num::UInt8 : vtk::Num::Float64, checked_product({section_n, count_of(w[2], "component")}, "the declared array size"));
     } else if (section != Section::None && (key == "VECTORS" || key == "NORMALS")) {
       need(w, 3);
       attribute(w[1], num_of(w[2]), 3);
@@ -195,7 +204,7 @@ TetMesh parse(Cursor& in, const std::string& wanted) {
         if (!aw.empty() && aw[0] == "METADATA") throw Error("METADATA blocks are not supported");
         need(aw, 4);
         const std::size_t comps = count_of(aw[1], "component"), tuples = count_of(aw[2], "tuple");
-        auto v = in.values(num_of(aw[3]), comps * tuples);
+        auto v = in.values(num_of(aw[3]), checked_product({comps, tuples}, "the declared FIELD array size"));
         if (section == Section::Point && comps == 1 && tuples == n_points)
           point_arrays.emplace_back(aw[0], std::move(v));
       }

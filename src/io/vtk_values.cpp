@@ -7,6 +7,7 @@
 #include <map>
 
 #include "vri/core/error.hpp"
+#include "vri/core/memory_limit.hpp"
 
 namespace vri::vtk {
 
@@ -55,6 +56,7 @@ std::vector<double> decode(std::span<const std::byte> bytes, Num type, std::size
     throw Error("binary data ends early: " + std::to_string(count) + " values need " +
                 std::to_string(count * size) + " bytes, " + std::to_string(bytes.size()) + " left");
   const bool swap = big_endian != (std::endian::native == std::endian::big);
+  check_allocation(count, sizeof(double), "a mesh array of " + std::to_string(count) + " values");
   std::vector<double> out(count);
   const std::byte* p = bytes.data();
   for (std::size_t i = 0; i < count; ++i, p += size) {

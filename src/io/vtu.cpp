@@ -2,14 +2,18 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <map>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
+#include "vri/core/checked_size.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/memory_limit.hpp"
 #include "vri/io/file_io.hpp"
 #include "vtk_values.hpp"
 
@@ -127,31 +131,53 @@ struct Array {
   std::size_t offset = 0;                          // appended
 };
 
-// The bytes of a binary array from its (decoded or raw) stream: header then data.
-// `more` supplies further bytes of the stream when the first read was short.
-std::vector<std::byte> unpack(const Format& f, std::span<const std::byte> stream, std::size_t expected) {
+// Header word k of a binary array's stream, read as an unsigned integer (a
+// float round trip would make casts of values near 2^64 undefined).
+std::uint64_t header_word(const Format& f, std::span<const std::byte> stream, std::uint64_t k) {
   const std::size_t hs = vtk::num_size(f.header);
-  auto word = [&](std::size_t k) {
-    const auto v = vtk::decode(stream.subspan(std::min(stream.size(), k * hs)), f.header, 1, f.big_endian);
-    return static_cast<std::size_t>(v[0]);
-  };
-  std::vector<std::byte> out;
-  if (!f.zlib) {
-    const std::size_t n = word(0);
-    if (n != expected) throw Error("binary array holds " + std::to_string(n) + " bytes, expected " + std::to_string(expected));
-    if (stream.size() < hs + n) throw Error("binary array ends early");
-    out.assign(stream.begin() + hs, stream.begin() + hs + n);
-    return out;
+  if (k >= stream.size() / hs) throw Error("binary array header ends early");
+  std::uint64_t v = 0;
+  for (std::size_t i = 0; i < hs; ++i) {
+    const std::size_t b = f.big_endian ? i : hs - 1 - i;
+    v = (v << 8) | std::to_integer<std::uint64_t>(stream[k * hs + b]);
   }
-  const std::size_t blocks = word(0), block_size = word(1), last = word(2);
-  if (blocks > (std::size_t{1} << 32)) throw Error("bad compressed header");
-  std::size_t at = (3 + blocks) * hs;
-  out.resize(expected);
-  std::size_t filled = 0;
-  for (std::size_t b = 0; b < blocks; ++b) {
-    const std::size_t csize = word(3 + b);
-    const std::size_t usize = (b + 1 == blocks && last != 0) ? last : block_size;
-    if (stream.size() < at + csize || filled + usize > expected) throw Error("compressed array is truncated or too large");
+  return v;
+}
+
+// The bytes of a binary array from its (decoded or raw) stream: header then data.
+// Every size in the header is checked against the bytes present (without
+// wrapping) before anything is allocated.
+std::vector<std::byte> unpack(const Format& f, std::span<const std::byte> stream, std::uint64_t expected) {
+  const std::size_t hs = vtk::num_size(f.header);
+  auto word = [&](std::uint64_t k) { return header_word(f, stream, k); };
+  if (!f.zlib) {
+    const std::uint64_t n = word(0);
+    if (n != expected) throw Error("binary array holds " + std::to_string(n) + " bytes, expected " + std::to_string(expected));
+    if (stream.size() - hs < n) throw Error("binary array ends early");
+    return std::vector<std::byte>(stream.begin() + hs, stream.begin() + hs + n);
+  }
+  const std::uint64_t blocks = word(0), block_size = word(1), last = word(2);
+  if (blocks > stream.size() / hs) throw Error("compressed header declares " + std::to_string(blocks) + " blocks, more than the data holds");
+  std::uint64_t at = (3 + blocks) * hs;
+  if (at > stream.size()) throw Error("compressed header ends early");
+  // zlib expands at most 1032:1, so a block that claims more is refused before
+  // its output is allocated.
+  constexpr std::uint64_t kMaxRatio = 1032;
+  std::uint64_t total = 0;
+  for (std::uint64_t b = 0; b < blocks; ++b) {
+    const std::uint64_t csize = word(3 + b), usize = (b + 1 == blocks && last != 0) ? last : block_size;
+    if (usize > expected - total) throw Error("compressed array is larger than its " + std::to_string(expected) + " bytes");
+    if (csize > stream.size() - at || usize / kMaxRatio > csize) throw Error("compressed array is truncated");
+    total += usize;
+    at += csize;
+  }
+  if (total != expected) throw Error("compressed array holds " + std::to_string(total) + " bytes, expected " + std::to_string(expected));
+  check_allocation(expected, "a decompressed mesh array");
+  std::vector<std::byte> out(expected);
+  at = (3 + blocks) * hs;
+  std::uint64_t filled = 0;
+  for (std::uint64_t b = 0; b < blocks; ++b) {
+    const std::uint64_t csize = word(3 + b), usize = (b + 1 == blocks && last != 0) ? last : block_size;
     uLongf len = usize;
     if (uncompress(reinterpret_cast<Bytef*>(out.data() + filled), &len,
                    reinterpret_cast<const Bytef*>(stream.data() + at), csize) != Z_OK || len != usize)
@@ -159,7 +185,6 @@ std::vector<std::byte> unpack(const Format& f, std::span<const std::byte> stream
     filled += usize;
     at += csize;
   }
-  if (filled != expected) throw Error("compressed array holds " + std::to_string(filled) + " bytes, expected " + std::to_string(expected));
   return out;
 }
 
@@ -238,7 +263,8 @@ TetMesh parse(std::string_view text, const std::string& wanted) {
     try {
       if (a.format == "ascii") {
         std::vector<double> out;
-        out.reserve(count);
+        // Each value takes at least two characters: never reserve more than the text can hold.
+        out.reserve(std::min<std::uint64_t>(count, (a.content_end - a.content_begin) / 2 + 1));
         const char* p = text.data() + a.content_begin;
         const char* e = text.data() + a.content_end;
         while (out.size() < count) {
@@ -252,17 +278,17 @@ TetMesh parse(std::string_view text, const std::string& wanted) {
         }
         return out;
       }
-      const std::size_t bytes = count * vtk::num_size(a.type);
-      std::vector<std::byte> stream;
+      const std::uint64_t bytes = checked_product({count, vtk::num_size(a.type)}, "the declared array size");
+      std::vector<std::byte> decoded;
+      std::span<const std::byte> stream;
       if (a.format == "binary") {
-        stream = base64(text.substr(a.content_begin, a.content_end - a.content_begin), SIZE_MAX);
+        stream = decoded = base64(text.substr(a.content_begin, a.content_end - a.content_begin), SIZE_MAX);
       } else {
         if (!appended) throw Error("is appended but the file has no AppendedData");
+        if (a.offset > text.size() - *appended) throw Error("offset is past the end of the file");
         const std::size_t start = *appended + a.offset;
-        if (start > text.size()) throw Error("offset is past the end of the file");
-        if (appended_encoding == "base64") stream = base64(text.substr(start), SIZE_MAX);
-        else stream.assign(reinterpret_cast<const std::byte*>(text.data()) + start,
-                           reinterpret_cast<const std::byte*>(text.data()) + text.size());
+        if (appended_encoding == "base64") stream = decoded = base64(text.substr(start), SIZE_MAX);
+        else stream = std::as_bytes(std::span(text.data() + start, text.size() - start));
       }
       return vtk::decode(unpack(f, stream, bytes), a.type, count, f.big_endian);
     } catch (const Error& e) {
@@ -280,7 +306,7 @@ TetMesh parse(std::string_view text, const std::string& wanted) {
   const Array* types = find("Cells", "types");
   if (!pts || pts->components != 3) throw Error("no Points array of 3 components");
   if (!conn || !offs || !types) throw Error("Cells needs connectivity, offsets and types arrays");
-  const auto xyz = values(*pts, 3 * *n_points);
+  const auto xyz = values(*pts, checked_product({3, *n_points}, "NumberOfPoints"));
   auto ends = vtk::to_indices(values(*offs, *n_cells), "offsets");
   std::vector<std::int64_t> starts(1, 0);
   starts.insert(starts.end(), ends.begin(), ends.end());  // VTK stores where each cell ends

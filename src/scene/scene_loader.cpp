@@ -164,7 +164,7 @@ GridVolume grid_volume_from(const json& j, const fs::path& base, const std::stri
     if (file.is_relative()) file = base / file;
     const std::string ext = file.extension().string();
     if (ext == ".nrrd" || ext == ".nhdr") {
-      vol.emplace(read_nrrd(file));
+      vol.emplace(read_nrrd(file, NrrdOptions{r.boolean(j, "allow_outside_paths", false)}));
     } else if (ext == ".dat") {
       vol.emplace(read_volvis_dat(file));
     } else {

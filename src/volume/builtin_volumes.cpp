@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
+
+#include "vri/core/memory_limit.hpp"
 
 namespace vri {
 
@@ -12,6 +15,7 @@ namespace {
 template <class F>
 GridVolume generate(std::array<int, 3> dims, F&& f) {
   const std::uint64_t n = GridVolume::checked_sample_count({dims[0], dims[1], dims[2]});
+  check_allocation(n, sizeof(float), "a built-in volume of " + std::to_string(n) + " samples");
   std::vector<float> v(n);
   std::size_t idx = 0;
   for (int k = 0; k < dims[2]; ++k)

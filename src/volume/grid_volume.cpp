@@ -6,6 +6,7 @@
 #include <string>
 
 #include "vri/core/error.hpp"
+#include "vri/core/memory_limit.hpp"
 
 namespace vri {
 
@@ -16,8 +17,11 @@ std::uint64_t GridVolume::checked_sample_count(std::array<std::int64_t, 3> dims)
     if (dims[a] > (std::int64_t{1} << 24))
       throw Error("volume dim " + std::to_string(dims[a]) + " is absurdly large");
   }
-  const std::uint64_t n = static_cast<std::uint64_t>(dims[0]) * dims[1] * dims[2];
-  if (n > kMaxSamples)
+  // Three dims of up to 2^24 each can overflow 64 bits: multiply with a check.
+  std::uint64_t n = 0;
+  const bool wraps = __builtin_mul_overflow(static_cast<std::uint64_t>(dims[0]), static_cast<std::uint64_t>(dims[1]), &n) ||
+                     __builtin_mul_overflow(n, static_cast<std::uint64_t>(dims[2]), &n);
+  if (wraps || n > kMaxSamples)
     throw Error("volume of " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" +
                 std::to_string(dims[2]) + " samples exceeds the limit of " +
                 std::to_string(kMaxSamples) + " samples");
@@ -62,6 +66,9 @@ GridVolume::Samples storage_for(ScalarType type, std::uint64_t count) {
 GridVolume::Samples GridVolume::decode(ScalarType type, Endian endian, std::uint64_t count,
                                        const std::function<void(std::span<std::byte>)>& fill) {
   const std::size_t size = scalar_type_size(type);
+  // The stored samples, plus the file's bytes for a type converted to float.
+  check_allocation(count, (is_stored(type) ? 0 : size) + scalar_type_size(is_stored(type) ? type : ScalarType::Float32),
+                   "a volume of " + std::to_string(count) + " samples");
   if (!is_stored(type)) {  // converted to float
     std::vector<std::byte> bytes(count * size);
     fill(bytes);

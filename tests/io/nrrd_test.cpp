@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <filesystem>
+#include <string>
 #include <vector>
 
+#include "io/gzip.hpp"
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
 #include "vri/volume/builtin_volumes.hpp"
@@ -124,6 +127,101 @@ TEST(Nrrd, RefusesBrokenFiles) {
   refuse("NRRD0004\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n12345678");  // no type
   refuse(ok + "encoding: raw\ndata file: missing.raw\n");
   EXPECT_THROW(read_nrrd(dir / "absent.nrrd"), Error);
+}
+
+std::string error_of(const std::filesystem::path& path, const NrrdOptions& options = {}) {
+  try {
+    read_nrrd(path, options);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// Issue 17 defects 1 and 10: sizes are checked integers (1e300 was an
+// undefined cast) whose product cannot wrap (2^24 per axis wrapped to 0).
+TEST(Nrrd, RefusesSizesThatOverflow) {
+  test::TempDir dir;
+  auto error = [&](const std::string& sizes) {
+    test::write_text(dir / "big.nrrd", "NRRD0004\ntype: uint8\ndimension: 3\nsizes: " + sizes + "\nencoding: raw\n\nx");
+    return error_of(dir / "big.nrrd");
+  };
+  EXPECT_NE(error("1e300 2 2").find("'sizes' must be an integer"), std::string::npos) << error("1e300 2 2");
+  EXPECT_NE(error("2 2 99999999999999999999999").find("must be an integer"), std::string::npos);
+  EXPECT_NE(error("2.5 2 2").find("must be an integer"), std::string::npos);
+  EXPECT_NE(error("16777216 16777216 16777216").find("exceeds the limit"), std::string::npos)
+      << error("16777216 16777216 16777216");
+  EXPECT_NE(error("16777216 16777216 65536").find("exceeds the limit"), std::string::npos);
+}
+
+// Issue 17 defect 9: a 120-byte gzip NRRD declaring 1024^3 floats allocated
+// 4 GiB before inflating; deflate cannot expand that much, so it is refused
+// up front. Ascii sizes the text cannot hold are refused the same way.
+TEST(Nrrd, RefusesDeclaredSizesTheDataCannotHold) {
+  test::TempDir dir;
+  const std::vector<std::byte> zeros(64);
+  const auto packed = gzip(zeros);
+  std::string text = "NRRD0004\ntype: float\ndimension: 3\nsizes: 1024 1024 1024\nencoding: gzip\n\n";
+  text.append(reinterpret_cast<const char*>(packed.data()), packed.size());
+  test::write_text(dir / "bomb.nrrd", text);
+  EXPECT_NE(error_of(dir / "bomb.nrrd").find("more than its"), std::string::npos) << error_of(dir / "bomb.nrrd");
+  test::write_text(dir / "a.nrrd", "NRRD0004\ntype: float\ndimension: 3\nsizes: 1024 1024 1024\nencoding: ascii\n\n1 2 3\n");
+  EXPECT_NE(error_of(dir / "a.nrrd").find("1073741824 ascii values in 6 bytes"), std::string::npos) << error_of(dir / "a.nrrd");
+}
+
+// Issue 17 defect 12: a negative byte skip other than -1 was silently ignored;
+// -1 (raw: the data are the last bytes) has no meaning for gzip.
+TEST(Nrrd, NegativeByteSkip) {
+  test::TempDir dir;
+  const std::string head = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\n";
+  test::write_text(dir / "m1.nrrd", head + "encoding: raw\nbyte skip: -1\n\nJUNK\1\2\3\4\5\6\7\10");
+  const auto v = read_nrrd(dir / "m1.nrrd");
+  EXPECT_EQ(test::floats(v), (std::vector<float>{1, 2, 3, 4, 5, 6, 7, 8}));
+  test::write_text(dir / "m2.nrrd", head + "encoding: raw\nbyte skip: -2\n\n12345678");
+  EXPECT_NE(error_of(dir / "m2.nrrd").find("'byte skip' must be an integer from -1"), std::string::npos)
+      << error_of(dir / "m2.nrrd");
+  test::write_text(dir / "m3.nrrd", head + "encoding: gzip\nbyte skip: -1\n\n12345678");
+  EXPECT_NE(error_of(dir / "m3.nrrd").find("only works with raw"), std::string::npos) << error_of(dir / "m3.nrrd");
+  test::write_text(dir / "m4.nrrd", head + "encoding: raw\nbyte skip: lots\n\n12345678");
+  EXPECT_NE(error_of(dir / "m4.nrrd").find("'byte skip' must be an integer"), std::string::npos);
+}
+
+// Issue 17 defect 13: concatenated gzip members (as gzip -d reads them).
+TEST(Nrrd, ReadsMultiMemberGzip) {
+  test::TempDir dir;
+  std::vector<std::byte> a(5), b(3);
+  for (std::size_t i = 0; i < a.size(); ++i) a[i] = std::byte(i + 1);
+  for (std::size_t i = 0; i < b.size(); ++i) b[i] = std::byte(i + 6);
+  const auto ga = gzip(a), gb = gzip(b);
+  std::string text = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: gzip\n\n";
+  text.append(reinterpret_cast<const char*>(ga.data()), ga.size());
+  text.append(reinterpret_cast<const char*>(gb.data()), gb.size());
+  test::write_text(dir / "two.nrrd", text);
+  EXPECT_EQ(test::floats(read_nrrd(dir / "two.nrrd")), (std::vector<float>{1, 2, 3, 4, 5, 6, 7, 8}));
+}
+
+// Issue 17 defect 13: a detached header may not name data outside its folder
+// unless allowed.
+TEST(Nrrd, DataFileStaysInTheHeadersFolder) {
+  test::TempDir dir;
+  std::filesystem::create_directories(dir / "sub");
+  test::write_text(dir / "outside.raw", "12345678");
+  test::write_text(dir / "sub" / "inside.raw", "12345678");
+  const std::string head = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\ndata file: ";
+  test::write_text(dir / "sub" / "ok.nhdr", head + "inside.raw\n");
+  EXPECT_EQ(read_nrrd(dir / "sub" / "ok.nhdr").size(), 8u);
+  test::write_text(dir / "sub" / "up.nhdr", head + "../outside.raw\n");
+  test::write_text(dir / "sub" / "abs.nhdr", head + (dir / "outside.raw").string() + "\n");
+  test::write_text(dir / "sub" / "sneaky.nhdr", head + "./x/../../outside.raw\n");
+  std::filesystem::create_symlink(dir / "outside.raw", dir / "sub" / "link.raw");
+  test::write_text(dir / "sub" / "link.nhdr", head + "link.raw\n");
+  for (const char* name : {"up.nhdr", "abs.nhdr", "sneaky.nhdr", "link.nhdr"}) {
+    EXPECT_NE(error_of(dir / "sub" / name).find("outside the header's folder"), std::string::npos)
+        << name << ": " << error_of(dir / "sub" / name);
+    if (std::string(name) != "sneaky.nhdr") {  // sub/x does not exist: the OS cannot resolve it
+      EXPECT_EQ(read_nrrd(dir / "sub" / name, NrrdOptions{.allow_outside_paths = true}).size(), 8u) << name;
+    }
+  }
 }
 
 }  // namespace

@@ -81,5 +81,14 @@ TEST(RawVolume, RefusesWrongSizesAndMissingFiles) {
   }
 }
 
+// Issue 17 defect 1: dims whose product wraps 64 bits matched an empty file.
+TEST(RawVolume, RefusesDimsWhoseProductOverflows) {
+  test::TempDir dir;
+  test::write_text(dir / "empty.raw", "");
+  const std::int64_t big = std::int64_t{1} << 24;
+  EXPECT_THROW(read_raw_volume(dir / "empty.raw", {big, big, big}, ScalarType::UInt8), Error);
+  EXPECT_THROW(read_raw_volume(dir / "empty.raw", {big, big, std::int64_t{1} << 16}, ScalarType::UInt8), Error);
+}
+
 }  // namespace
 }  // namespace vri

@@ -85,5 +85,28 @@ TEST(VtkLegacy, RefusesBadMeshesWithOneLine) {
   test::expect_mesh_error(parse(bin), "binary data ends early");
 }
 
+// Issue 17 defect 3: a file ending right after "FIELD fd 1" read a word of an
+// empty line (SIGSEGV).
+TEST(VtkLegacy, RefusesAFileEndingInsideFIELD) {
+  auto parse = [](const std::string& text) { return [=] { parse_vtk_legacy(test::bytes_of(text), "", "m.vtk"); }; };
+  test::expect_mesh_error(parse(kHead + "FIELD fd 1"), "the file ends where a line was expected");
+  test::expect_mesh_error(parse(kHead + "FIELD fd 1\n"), "the file ends where a line was expected");
+  test::expect_mesh_error(parse(kHead + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES"), "incomplete 'CELL_TYPES' line");
+}
+
+// Issue 17 defect 9: declared counts are checked against the bytes present
+// before anything is allocated (2.5e8 points in a few bytes took 5.7 GB), and
+// products of counts cannot wrap.
+TEST(VtkLegacy, RefusesCountsTheFileCannotHold) {
+  auto parse = [](const std::string& text) { return [=] { parse_vtk_legacy(test::bytes_of(text), "", "m.vtk"); }; };
+  const std::string head = "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n";
+  test::expect_mesh_error(parse(head + "POINTS 250000000 float\n0 0 0 1 0 0\n"), "750000000 values declared, 12 bytes left");
+  test::expect_mesh_error(parse(kHead + "POINT_DATA 4\nFIELD fd 1\nf 1099511627776 1099511627776 float\n0\n"),
+                          "too large");
+  std::string bin = "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 250000000 float\n";
+  bin += std::string(24, '\0');
+  test::expect_mesh_error(parse(bin), "binary data ends early");
+}
+
 }  // namespace
 }  // namespace vri

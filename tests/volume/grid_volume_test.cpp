@@ -9,6 +9,8 @@
 #include "test_support.hpp"
 #include "vri/volume/float_sampler.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/memory_limit.hpp"
+#include "vri/volume/builtin_volumes.hpp"
 
 namespace vri {
 namespace {
@@ -115,6 +117,43 @@ TEST(GridVolume, RejectsBadConstruction) {
   EXPECT_THROW(GridVolume::checked_sample_count({100000, 100000, 100000}), Error);
   EXPECT_THROW(GridVolume::checked_sample_count({-3, 10, 10}), Error);
   EXPECT_EQ(GridVolume::checked_sample_count({64, 64, 64}), 262144u);
+}
+
+// Issue 17 defect 1: 2^24 per axis (2^72 samples) and 2^24 x 2^24 x 2^16 (2^64)
+// wrapped to 0 in the count check and passed it.
+TEST(GridVolume, SampleCountCheckDoesNotWrap) {
+  const std::int64_t big = std::int64_t{1} << 24;
+  EXPECT_THROW(GridVolume::checked_sample_count({big, big, big}), Error);
+  EXPECT_THROW(GridVolume::checked_sample_count({big, big, std::int64_t{1} << 16}), Error);
+  EXPECT_THROW(GridVolume::checked_sample_count({big, big, 2}), Error);
+  EXPECT_EQ(GridVolume::checked_sample_count({1024, 1024, 1024}), std::uint64_t{1} << 30);
+}
+
+// The memory budget refuses a volume before allocating it, saying how to raise it.
+TEST(GridVolume, MemoryLimitRefusesBigVolumes) {
+  set_memory_limit(1000);
+  try {
+    random_field({32, 32, 32});
+    ADD_FAILURE() << "expected the memory limit to refuse 128 KiB";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("--max-memory"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("131072 bytes"), std::string::npos) << e.what();
+  }
+  set_memory_limit(0);
+  EXPECT_EQ(random_field({32, 32, 32}).size(), 32768u);
+  EXPECT_GT(memory_limit(), 0u);
+}
+
+TEST(GridVolume, ParsesByteSizes) {
+  EXPECT_EQ(parse_byte_size("512M"), std::uint64_t{512} << 20);
+  EXPECT_EQ(parse_byte_size("4G"), std::uint64_t{4} << 30);
+  EXPECT_EQ(parse_byte_size("4GiB"), std::uint64_t{4} << 30);
+  EXPECT_EQ(parse_byte_size("1.5K"), 1536u);
+  EXPECT_EQ(parse_byte_size("1000"), 1000u);
+  EXPECT_EQ(parse_byte_size("-1"), std::nullopt);
+  EXPECT_EQ(parse_byte_size("4X"), std::nullopt);
+  EXPECT_EQ(parse_byte_size("0"), std::nullopt);
+  EXPECT_EQ(parse_byte_size("1e30"), std::nullopt);
 }
 
 }  // namespace

@@ -11,7 +11,13 @@ namespace vri {
 // Reads a 3D NRRD (or 4D with a leading axis of size 1). Spacing comes from
 // `spacings`, or from the lengths of `space directions` (rotations are not
 // applied: vri grids are axis-aligned); origin from `space origin`.
-GridVolume read_nrrd(const std::filesystem::path& path);
+// A detached header's `data file` is resolved against the header's folder and
+// may not leave it (absolute paths, "..", symlinks out) unless
+// allow_outside_paths (the scene volume key "allow_outside_paths").
+struct NrrdOptions {
+  bool allow_outside_paths = false;
+};
+GridVolume read_nrrd(const std::filesystem::path& path, const NrrdOptions& options = {});
 
 enum class NrrdEncoding { Raw, Gzip };
 // Writes the samples in their stored type (uchar, ushort, short or float). With a ".nhdr" path the data goes to a detached file
