@@ -5,9 +5,11 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <string>
 
 #include "commands.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/memory_limit.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"vri: volume rendering with measurable accuracy"};
@@ -16,8 +18,22 @@ int main(int argc, char** argv) {
   vri::cli::Runner compare = vri::cli::add_compare_command(app);
   vri::cli::Runner table = vri::cli::add_table_command(app);
   vri::cli::Runner ray = vri::cli::add_ray_command(app);
+  // Global, accepted after the subcommand too (fallthrough).
+  std::string max_memory;
+  app.add_option("--max-memory", max_memory,
+                 "Memory budget for volumes, meshes and tables: bytes or 512M, 4G, ... (default: 75% of RAM)");
+  for (CLI::App* sub : app.get_subcommands({})) sub->fallthrough();
   try {
     app.parse(argc, argv);
+    if (!max_memory.empty()) {
+      const auto bytes = vri::parse_byte_size(max_memory);
+      if (!bytes) {
+        std::cerr << "vri: error: --max-memory expects a size such as 1073741824, 512M or 4G, got '" << max_memory
+                  << "'\n";
+        return 2;
+      }
+      vri::set_memory_limit(*bytes);
+    }
   } catch (const CLI::CallForHelp&) {
     std::cout << app.help();
     return 0;

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "vri/core/error.hpp"
+#include "vri/core/memory_limit.hpp"
 
 namespace vri {
 
@@ -27,6 +28,7 @@ std::size_t mapped_bytes(std::size_t count) {
 
 ZeroedFloats::ZeroedFloats(std::size_t count) : size_(count) {
   if (count == 0) return;
+  check_allocation(count, sizeof(float), "a table of " + std::to_string(count) + " floats");
   const std::size_t bytes = mapped_bytes(count);
   // Huge pages need a 2 MiB-aligned address: map a page more, unmap the ends.
   const std::size_t slack = bytes % kPage == 0 ? kPage : 0;

@@ -2,9 +2,20 @@
 
 #include <algorithm>
 
+#include "vri/core/memory_limit.hpp"
+
 namespace vri {
 
-GradientField::GradientField(const GridVolume& volume) : volume_(volume), g_(volume.size() * 3) {
+namespace {
+
+std::vector<float> gradient_storage(std::size_t points) {
+  check_allocation(points, 3 * sizeof(float), "the lighting gradient field (3 floats per grid point)");
+  return std::vector<float>(3 * points);
+}
+
+}  // namespace
+
+GradientField::GradientField(const GridVolume& volume) : volume_(volume), g_(gradient_storage(volume.size())) {
   volume.visit([this](auto v) { fill(v.data()); });
 }
 
