@@ -4,7 +4,8 @@
 # Exits non-zero if any harness finds a crash, a leak, a timeout or an
 # out-of-memory; the failing input is left in BUILD_DIR/fuzz-artifacts/ (keep
 # it under tests/data/fuzz/HARNESS/ once fixed). The long campaign of
-# docs/RELIABILITY.md is this script with SECONDS=600 or more.
+# docs/RELIABILITY.md is this script with SECONDS=600 or more (FUZZ_PARALLEL=1
+# runs the harnesses at once).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-10}
@@ -20,20 +21,27 @@ declare -A extra=(
   [vtk_legacy]="tests/data/mesh" [vtu]="tests/data/mesh"
   [scene]="scenes" [transfer_function]="presets"
 )
-status=0
-for h in raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu scene transfer_function; do
-  corpus="$dir/fuzz-corpus/$h"
+# One harness: its corpus grows in BUILD_DIR/fuzz-corpus/HARNESS; its log
+# ends with libFuzzer's stats and the CPU seconds it used.
+fuzz_one() {
+  local h=$1 corpus="$dir/fuzz-corpus/$1" log="$dir/fuzz-artifacts/$1.log" seeds=()
   mkdir -p "$corpus"
-  seeds=()
   [ -d "fuzz/seeds/$h" ] && seeds+=("fuzz/seeds/$h")
   [ -d "tests/data/fuzz/$h" ] && seeds+=("tests/data/fuzz/$h")
   [ -n "${extra[$h]}" ] && seeds+=("${extra[$h]}")
-  echo "== fuzz_$h: ${seconds}s"
-  if ! "$dir/fuzz/fuzz_$h" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-       -max_len=65536 -print_final_stats=1 \
-       -artifact_prefix="$dir/fuzz-artifacts/$h-" >"$dir/fuzz-artifacts/$h.log" 2>&1; then
-    echo "fuzz_$h FAILED: see $dir/fuzz-artifacts/$h.log"; tail -40 "$dir/fuzz-artifacts/$h.log"; status=1
-  fi
-  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$dir/fuzz-artifacts/$h.log" | tr '\n' ' '; echo
-done
+  local TIMEFORMAT="cpu_seconds: %U user %S sys" rc=0
+  { time "$dir/fuzz/fuzz_$h" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+      -max_len=65536 -print_final_stats=1 -artifact_prefix="$dir/fuzz-artifacts/$h-" >"$log" 2>&1 || rc=$?; } 2>>"$log"
+  echo "== fuzz_$h: ${seconds}s: $(grep -E 'stat::number_of_executed_units' "$log" | tr -s ' ') $(grep cpu_seconds "$log")"
+  if [ $rc -ne 0 ]; then echo "fuzz_$h FAILED: see $log"; grep -A30 -E "ERROR|deadly|Timeout|out-of-memory" "$log" | head -40; fi
+  return $rc
+}
+status=0
+if [ "${FUZZ_PARALLEL:-0}" = 1 ]; then  # every harness at once (the long campaign)
+  pids=()
+  for h in raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu scene transfer_function; do fuzz_one "$h" & pids+=($!); done
+  for p in "${pids[@]}"; do wait "$p" || status=1; done
+else
+  for h in raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu scene transfer_function; do fuzz_one "$h" || status=1; done
+fi
 exit $status
