@@ -3,6 +3,7 @@
 #include <string>
 
 #include "vri/core/error.hpp"
+#include "vri/core/memory_limit.hpp"
 
 namespace vri {
 
@@ -26,6 +27,8 @@ TetMesh tetrahedralize(const GridVolume& grid, int tets_per_cell) {
   const std::size_t cells = std::size_t(n[0] - 1) * (n[1] - 1) * (n[2] - 1);
   if (grid.size() > std::size_t{INT32_MAX} / 2 || cells * tets_per_cell > std::size_t{INT32_MAX})
     throw Error("tetrahedralize: the grid is too large for a mesh");
+  check_allocation(grid.size() * sizeof(Vec3) + cells * tets_per_cell * sizeof(TetMesh::Tet),
+                   "a tetrahedralized mesh of " + std::to_string(cells * tets_per_cell) + " tetrahedra");
   std::vector<Vec3> points;
   points.reserve(grid.size());
   for (int k = 0; k < n[2]; ++k)

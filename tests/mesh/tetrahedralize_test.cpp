@@ -4,6 +4,7 @@
 
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/memory_limit.hpp"
 
 namespace vri {
 namespace {
@@ -38,6 +39,15 @@ INSTANTIATE_TEST_SUITE_P(PerCell, Tetrahedralize, ::testing::Values(5, 6));
 TEST(TetrahedralizeErrors, RefusesOtherSplits) {
   const GridVolume g = test::volume_from({2, 2, 2}, [](double, double, double) { return 0.0; });
   EXPECT_THROW(tetrahedralize(g, 4), Error);
+}
+
+// The memory budget (--max-memory) is consulted before the mesh is built.
+TEST(TetrahedralizeErrors, RespectsTheMemoryLimit) {
+  const GridVolume g = test::volume_from({4, 4, 4}, [](double x, double, double) { return x; });
+  set_memory_limit(2000);  // 64 points (1536 bytes) + 135 tetrahedra (2160 bytes)
+  EXPECT_THROW(tetrahedralize(g, 5), Error);
+  set_memory_limit(0);
+  EXPECT_EQ(tetrahedralize(g, 5).size(), 135u);
 }
 
 }  // namespace
