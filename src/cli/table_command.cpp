@@ -101,7 +101,7 @@ Runner add_table_command(CLI::App& app) {
   cmd->add_option("--lengths", args->lengths, "Number of slab lengths M: shape (M, N, N, 4)");
   cmd->add_option("--max-length", args->max_length, "Largest slab length LMAX (with --lengths)");
   cmd->add_option("--builder", args->builder,
-                  "order 1: brute, incremental, sliced or engel (default incremental); order 2: plain or fast (default)");
+                  "order 1: brute, incremental, sliced, engel or exact (default incremental); order 2: plain or fast (default)");
   cmd->add_option("--iterations", args->iterations, "order 2: sub-steps per slab K, 1..4096 (default 64)");
   cmd->add_option("--steps", args->steps, "sliced: integration steps (default 2N)");
   cmd->add_option("--accumulation", args->accumulation, "sliced: 8bit, 12bit, fp16 or fp32 (default fp32)");

@@ -23,7 +23,7 @@ PreintegrationTable IncrementalBuilder::build(const DiscreteTf& tf, double lengt
   tbb::parallel_for(1, n, [&](int m) {
     DiagonalSweep& sweep = sweeps.local();
     sweep.weights(pieces, length, m);
-    sweep.composite(&tf[0], m, table);
+    sweep.composite(&tf[0], tf.all_sub_pieces().data(), m, table);
   });
   return table;
 }

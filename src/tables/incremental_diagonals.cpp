@@ -11,7 +11,11 @@
 
 #include "incremental_diagonals.hpp"
 
+#include <cmath>
 #include <cstring>
+#include <span>
+
+#include "vri/tables/slab_integral.hpp"
 
 namespace vri {
 
@@ -78,7 +82,8 @@ constexpr int kAhead = 16;  // how many entries ahead the table is prefetched
 // diagonal goes to upper[i * stride] and lower[i * stride].
 template <class Out>
 VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep::Weights& w,
-                                   DiagonalSweep::Subranges& s, Out* upper, Out* lower, std::ptrdiff_t stride) {
+                                   DiagonalSweep::Subranges& s, const DiagonalSweep::SplitBins& split, Out* upper,
+                                   Out* lower, std::ptrdiff_t stride) {
   const int count = static_cast<int>(w.fp.size()), n = count + 1;
   // Local pointers: the stores below cannot change them, so they stay in registers.
   const double *fp = w.fp.data(), *fq = w.fq.data(), *bq = w.bq.data(), *bp = w.bp.data(), *alpha = w.alpha.data();
@@ -89,6 +94,10 @@ VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep
     const V4 p = load(&c[k]) * rgb, q = load(&c[k + 1]) * rgb, a = a_lane * alpha[k];
     store(p * fp[k] + q * fq[k] + a, piece_f[k]);
     store(q * bq[k] + p * bp[k] + a, piece_b[k]);
+  }
+  for (int j = 0; j < split.count; ++j) {  // the super-segments of split bins
+    piece_f[split.bins[j]] = split.f[j];
+    piece_b[split.bins[j]] = split.b[j];
   }
   for (int start = 0; start < count; start += m) {
     const int end = std::min(start + m, count);
@@ -128,15 +137,15 @@ VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep
 }
 
 __attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void composite_doubles(
-    const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s, SlabRgba* upper,
-    SlabRgba* lower) {
-  composite_diagonal(c, m, w, s, upper, lower, 1);
+    const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s,
+    const DiagonalSweep::SplitBins& split, SlabRgba* upper, SlabRgba* lower) {
+  composite_diagonal(c, m, w, s, split, upper, lower, 1);
 }
 
 __attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void composite_floats(
-    const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s, float* upper,
-    float* lower, std::ptrdiff_t stride) {
-  composite_diagonal(c, m, w, s, upper, lower, stride);
+    const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s,
+    const DiagonalSweep::SplitBins& split, float* upper, float* lower, std::ptrdiff_t stride) {
+  composite_diagonal(c, m, w, s, split, upper, lower, stride);
 }
 
 }  // namespace
@@ -147,15 +156,43 @@ DiagonalSweep::DiagonalSweep(int n) {
   for (auto* v : {&s_.piece_f, &s_.piece_b, &s_.head_f, &s_.tail_f, &s_.head_b, &s_.tail_b}) v->resize(count);
 }
 
-void DiagonalSweep::weights(const Pieces& pieces, double length, int m) { diagonal_weights(pieces, length / m, w_); }
-
-void DiagonalSweep::composite(const TfSample* c, int m, SlabRgba* upper, SlabRgba* lower) {
-  composite_doubles(c, m, w_, s_, upper, lower);
+void DiagonalSweep::weights(const Pieces& pieces, double length, int m) {
+  pieces_ = &pieces;
+  d_ = length / m;
+  diagonal_weights(pieces, d_, w_);
+  const auto& bins = pieces.tf->split_bins();
+  for (std::size_t j = 0; j < bins.size(); ++j) w_.alpha[bins[j]] = -std::expm1(-pieces.split_depth[j] * d_);
 }
 
-void DiagonalSweep::composite(const TfSample* c, int m, PreintegrationTable& table) {
+// Each split bin's sub-pieces composited exactly at piece length d_, both ways
+// (Lum et al.'s recurrence then joins them as any other piece).
+void DiagonalSweep::split_pieces(const SubPiece* subs) {
+  const DiscreteTf& tf = *pieces_->tf;
+  const auto& bins = tf.split_bins();
+  split_.bins = bins.data();
+  split_.count = static_cast<int>(bins.size());
+  split_.f.resize(bins.size());
+  split_.b.resize(bins.size());
+  const auto forward = [](const TfSample& p, const TfSample& q, double d) { return linear_piece(p, q, d).forward; };
+  for (std::size_t j = 0; j < bins.size(); ++j) {
+    const int k = bins[j];
+    const std::span<const SubPiece> span(subs + tf.sub_begin(k), subs + tf.sub_begin(k + 1));
+    split_.f[j] = integrate_sub_pieces(span, k, k + 1, 1, d_, forward);
+    split_.b[j] = integrate_sub_pieces(span, k, k + 1, -1, d_, forward);
+    // The same alpha as weights() gave the bin, so the chains' transmittance agrees with it.
+    split_.f[j].a = split_.b[j].a = w_.alpha[k];
+  }
+}
+
+void DiagonalSweep::composite(const TfSample* c, const SubPiece* subs, int m, SlabRgba* upper, SlabRgba* lower) {
+  split_pieces(subs);
+  composite_doubles(c, m, w_, s_, split_, upper, lower);
+}
+
+void DiagonalSweep::composite(const TfSample* c, const SubPiece* subs, int m, PreintegrationTable& table) {
+  split_pieces(subs);
   // Entry (i, i+m) is 4 (n + 1) floats after entry (i-1, i-1+m).
-  composite_floats(c, m, w_, s_, table.entry(0, m), table.entry(m, 0), 4 * (table.size() + 1));
+  composite_floats(c, m, w_, s_, split_, table.entry(0, m), table.entry(m, 0), 4 * (table.size() + 1));
 }
 
 }  // namespace vri

@@ -20,11 +20,22 @@ namespace vri {
 // What every diagonal needs from the transfer function: per piece k (table
 // scalars k, k+1) its end extinctions, and the pieces by decreasing
 // extinction, so the pieces too thick for the series at piece length d are
-// a prefix of `by_thickness`.
+// a prefix of `by_thickness`. A split bin (DiscreteTf::sub_pieces) is one
+// piece too, a "super-segment": its (C, alpha) at piece length d, forward and
+// backward, is its sub-pieces composited exactly (integrate_sub_pieces), so
+// every entry that covers whole bins is exact, as brute's, in O(N^2 + N K)
+// for K sub-pieces.
 struct Pieces {
+  const DiscreteTf* tf;
   std::vector<double> tau;        // tau[k] at table scalar k
   std::vector<int> by_thickness;  // piece indices, max(tau_k, tau_k+1) decreasing
-  explicit Pieces(const DiscreteTf& tf) : tau(tf.size()), by_thickness(tf.size() - 1) {
+  std::vector<double> split_depth;  // per split bin (tf->split_bins()), int tau du over its sub-pieces
+  explicit Pieces(const DiscreteTf& tf) : tf(&tf), tau(tf.size()), by_thickness(tf.size() - 1) {
+    for (int k : tf.split_bins()) {
+      double depth = 0;
+      for (const SubPiece& s : tf.sub_pieces(k)) depth += 0.5 * (s.p.tau + s.q.tau) * (s.u1 - s.u0);
+      split_depth.push_back(depth);
+    }
     for (int k = 0; k < tf.size(); ++k) tau[k] = tf[k].tau;
     std::iota(by_thickness.begin(), by_thickness.end(), 0);
     std::stable_sort(by_thickness.begin(), by_thickness.end(),
@@ -44,15 +55,17 @@ class DiagonalSweep {
  public:
   explicit DiagonalSweep(int n);
 
-  // The piece weights of diagonal m (pieces of length `length` / m).
+  // The piece weights of diagonal m (pieces of length `length` / m); a split
+  // bin's alpha from its sub-pieces.
   void weights(const Pieces& pieces, double length, int m);
 
   // Composites the colours c[0 .. n-1] (r, g, b of TfSample; tau is the
   // pieces') over diagonal m (after weights(..., m)): upper[i] = entry
   // (i, i+m), lower[i] = entry (i+m, i), i = 0 .. n-1-m; or straight into
-  // the table's entries, rounded to float.
-  void composite(const TfSample* c, int m, SlabRgba* upper, SlabRgba* lower);
-  void composite(const TfSample* c, int m, PreintegrationTable& table);
+  // the table's entries, rounded to float. `subs` are the split bins'
+  // sub-pieces with their colours, laid out as DiscreteTf::all_sub_pieces().
+  void composite(const TfSample* c, const SubPiece* subs, int m, SlabRgba* upper, SlabRgba* lower);
+  void composite(const TfSample* c, const SubPiece* subs, int m, PreintegrationTable& table);
 
   // Per piece k (table scalars k, k+1): the weights of piece_weights.hpp,
   // planar so the series loop vectorises.
@@ -68,10 +81,20 @@ class DiagonalSweep {
   struct Subranges {
     std::vector<SlabRgba> piece_f, piece_b, head_f, tail_f, head_b, tail_b;
   };
+  // The split bins' super-segments, forward and backward, for composite().
+  struct SplitBins {
+    const int* bins = nullptr;
+    int count = 0;
+    std::vector<SlabRgba> f, b;
+  };
 
  private:
+  void split_pieces(const SubPiece* subs);
   Weights w_;
   Subranges s_;
+  SplitBins split_;
+  const Pieces* pieces_ = nullptr;
+  double d_ = 0;  // piece length of the last weights()
 };
 
 inline Entry to_entry(double r, double g, double b, double a) {

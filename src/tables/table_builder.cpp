@@ -6,6 +6,7 @@
 #include "vri/core/error.hpp"
 #include "vri/tables/brute_builder.hpp"
 #include "vri/tables/engel_builder.hpp"
+#include "vri/tables/exact_builder.hpp"
 #include "vri/tables/incremental_builder.hpp"
 #include "vri/tables/sliced_builder.hpp"
 
@@ -31,7 +32,7 @@ void check_length_tables(int lengths, double max_length, int n, int tables) {
 }
 
 const std::vector<std::string>& known_builder_names() {
-  static const std::vector<std::string> names = {"brute", "incremental", "sliced", "engel"};
+  static const std::vector<std::string> names = {"brute", "incremental", "sliced", "engel", "exact"};
   return names;
 }
 
@@ -40,6 +41,7 @@ std::unique_ptr<TableBuilder> make_table_builder(const std::string& name) {
   if (name == "incremental") return std::make_unique<IncrementalBuilder>();
   if (name == "sliced") return std::make_unique<SlicedBuilder>();
   if (name == "engel") return std::make_unique<EngelBuilder>();
+  if (name == "exact") return std::make_unique<ExactBuilder>();
   std::string list;
   for (const auto& n : known_builder_names()) list += (list.empty() ? "" : ", ") + n;
   throw Error("unknown table builder '" + name + "' (known: " + list + ")");

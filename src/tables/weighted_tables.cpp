@@ -44,13 +44,20 @@ struct Scratch {
 };
 
 // Diagonal m of both tables.
-void build_diagonal(const DiscreteTf& tf, const Pieces& pieces, const std::vector<TfSample>& ramped,
-                    const std::vector<TfSample>& white_ramped, double length, int m, Scratch& s, WeightedTables& t) {
+// The ramped colours at the table scalars and at the split bins' sub-piece
+// ends (the weight applied where the colour is given, linear between).
+struct Ramped {
+  std::vector<TfSample> at;
+  std::vector<SubPiece> subs;
+};
+
+void build_diagonal(const DiscreteTf& tf, const Pieces& pieces, const Ramped& ramped, const Ramped& white_ramped,
+                    double length, int m, Scratch& s, WeightedTables& t) {
   const int n = tf.size();
   s.sweep.weights(pieces, length, m);
-  s.sweep.composite(&tf[0], m, s.c1_up.data(), s.c1_lo.data());
-  s.sweep.composite(ramped.data(), m, s.g_up.data(), s.g_lo.data());
-  s.sweep.composite(white_ramped.data(), m, s.gs_up.data(), s.gs_lo.data());
+  s.sweep.composite(&tf[0], tf.all_sub_pieces().data(), m, s.c1_up.data(), s.c1_lo.data());
+  s.sweep.composite(ramped.at.data(), ramped.subs.data(), m, s.g_up.data(), s.g_lo.data());
+  s.sweep.composite(white_ramped.at.data(), white_ramped.subs.data(), m, s.gs_up.data(), s.gs_lo.data());
   // C_W = (C_G - f C_1) / (j - f) for front index f, back index j: above
   // the diagonal f = i, j - f = m; below it f = i + m, j - f = -m.
   const auto back = [m](const SlabRgba& g, double gs, const SlabRgba& c1, double f, double sign) {
@@ -70,10 +77,16 @@ WeightedTables build_weighted_tables(const DiscreteTf& tf, double length) {
   const int n = tf.size();
   WeightedTables t{PreintegrationTable(tf.axis(), length), PreintegrationTable(tf.axis(), length)};
   // The globally ramped colours (§4.3, Fig. 6b): colour times index, and white times index.
-  std::vector<TfSample> ramped(n), white_ramped(n);
+  const auto ramp = [](const TfSample& v, double u) { return TfSample{v.r * u, v.g * u, v.b * u, v.tau}; };
+  const auto white = [](const TfSample& v, double u) { return TfSample{u, 0, 0, v.tau}; };
+  Ramped ramped, white_ramped;
   for (int k = 0; k < n; ++k) {
-    ramped[k] = {tf[k].r * k, tf[k].g * k, tf[k].b * k, tf[k].tau};
-    white_ramped[k] = {double(k), 0, 0, tf[k].tau};
+    ramped.at.push_back(ramp(tf[k], k));
+    white_ramped.at.push_back(white(tf[k], k));
+  }
+  for (const SubPiece& p : tf.all_sub_pieces()) {
+    ramped.subs.push_back({p.u0, p.u1, ramp(p.p, p.u0), ramp(p.q, p.u1)});
+    white_ramped.subs.push_back({p.u0, p.u1, white(p.p, p.u0), white(p.q, p.u1)});
   }
   tbb::parallel_for(0, n, [&](int i) {
     const double A = tf[i].tau * length, a = -std::expm1(-A), b = beta(A);

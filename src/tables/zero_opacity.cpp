@@ -13,8 +13,15 @@ ZeroOpacity::ZeroOpacity(const TransferFunction& tf) : tf_(&tf) {
 }
 
 ZeroOpacity::ZeroOpacity(const DiscreteTf& tf, TableOrder order) : axis_(tf.axis()), order_(order) {
+  // A split bin with extinction inside (a spike between two table scalars)
+  // marks both its table scalars opaque: every entry that covers it then counts.
+  std::vector<char> opaque(tf.size());
+  for (int i = 0; i < tf.size(); ++i) opaque[i] = tf[i].tau != 0;
+  for (int k : tf.split_bins())
+    for (const SubPiece& s : tf.sub_pieces(k))
+      if (s.p.tau != 0 || s.q.tau != 0) opaque[k] = opaque[k + 1] = 1;
   opaque_before_.assign(tf.size() + 1, 0);
-  for (int i = 0; i < tf.size(); ++i) opaque_before_[i + 1] = opaque_before_[i] + (tf[i].tau != 0 ? 1 : 0);
+  for (int i = 0; i < tf.size(); ++i) opaque_before_[i + 1] = opaque_before_[i] + opaque[i];
 }
 
 bool ZeroOpacity::over(double lo, double hi) const {

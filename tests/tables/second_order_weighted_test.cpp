@@ -68,7 +68,7 @@ SecondOrderWeights quadrature(const DiscreteTf& tf, double s_f, double s_m, doub
   double depth = 0, prev_tau = 0;
   for (int i = 0; i <= M; ++i) {
     const double u = double(i) / M;
-    const TfSample v = tf.at_index(scalar(u));
+    const TfSample v = tf.between_samples(scalar(u));
     if (i > 0) depth += 0.5 * (prev_tau + v.tau) * length / M;
     prev_tau = v.tau;
     const double g = v.tau * std::exp(-depth) * length / M * (i == 0 || i == M ? 0.5 : 1.0);

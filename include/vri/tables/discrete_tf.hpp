@@ -1,10 +1,13 @@
 #pragma once
 // DiscreteTf: the transfer function as every pre-integration table sees it
-// (SPEC §10). It is sampled at N table scalars
+// (SPEC §10). Its table axis has N table scalars
 //   x_i = s_lo + i * (s_hi - s_lo) / (N - 1),   i = 0 .. N-1,
-// [s_lo, s_hi] spanning the control points, and r, g, b, tau are taken as
-// linear in s between neighbouring x_i. When every control point lies on some
-// x_i this is the transfer function itself.
+// [s_lo, s_hi] spanning the control points. Between two neighbouring table
+// scalars (a "bin") r, g, b, tau are the transfer function itself: linear when
+// no control point falls inside the bin, else split into linear sub-pieces at
+// the control points inside it (steps included). So a feature narrower than
+// a bin is integrated, not dropped between samples (issue 16).
+#include <span>
 #include <vector>
 
 #include "vri/transfer/transfer_function.hpp"
@@ -21,6 +24,12 @@ struct ScalarAxis {
   double index(double s) const;
 };
 
+// One linear piece of a bin, in continuous index units: p at u0, q at u1 (u0 <= u1).
+struct SubPiece {
+  double u0, u1;
+  TfSample p, q;
+};
+
 class DiscreteTf {
  public:
   // Throws vri::Error unless 2 <= n <= kMaxSize.
@@ -31,12 +40,32 @@ class DiscreteTf {
   int size() const { return axis_.n; }
   // The transfer function at x_i.
   const TfSample& operator[](int i) const { return samples_[i]; }
-  // Linear between the samples at a continuous index u in [0, n-1].
+  // The transfer function at a continuous index u in [0, n-1]: linear between
+  // the samples in a plain bin, the sub-pieces in a split one.
   TfSample at_index(double u) const;
+  // Linear between the samples at x_i and x_{i+1}, ignoring control points
+  // inside the bin: what the second-order tables still read (their fast
+  // builder interpolates between table scalars only; docs/SECOND_ORDER.md).
+  TfSample between_samples(double u) const;
+
+  // Bin k (table scalars k, k+1) split at control points inside it: its
+  // sub-pieces from u = k to u = k+1, in order; empty for a plain bin, which is
+  // linear from (*this)[k] to (*this)[k+1].
+  std::span<const SubPiece> sub_pieces(int k) const {
+    return {subs_.data() + sub_begin_[k], subs_.data() + sub_begin_[k + 1]};
+  }
+  // The split bins, ascending.
+  const std::vector<int>& split_bins() const { return split_; }
+  // All sub-pieces of the split bins, bin after bin (sub_begin(k) is bin k's first).
+  const std::vector<SubPiece>& all_sub_pieces() const { return subs_; }
+  int sub_begin(int k) const { return sub_begin_[k]; }
 
  private:
   ScalarAxis axis_;
   std::vector<TfSample> samples_;
+  std::vector<int> sub_begin_;  // n + 1 entries: bin k's sub-pieces are [sub_begin_[k], sub_begin_[k+1])
+  std::vector<SubPiece> subs_;
+  std::vector<int> split_;
 };
 
 }  // namespace vri

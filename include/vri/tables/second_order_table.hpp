@@ -67,7 +67,7 @@ class SecondOrderTable {
   ZeroedFloats data_;
 };
 
-// One entry of the model above at continuous indices (DiscreteTf::at_index)
+// One entry of the model above at continuous indices (DiscreteTf::between_samples)
 // u_f, u_m, u_b, in double precision: the definition every builder is held to.
 SlabRgba second_order_entry(const DiscreteTf& tf, double u_f, double u_m, double u_b, double length,
                             int iterations);

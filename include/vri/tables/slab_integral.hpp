@@ -4,12 +4,14 @@
 // definition every pre-integration table entry is held to:
 //
 //   entry(s_f, s_b, l) = (C, alpha) of a slab of length l whose scalar runs
-//   linearly from s_f to s_b, with r, g, b, tau linear between table scalars.
+//   linearly from s_f to s_b through the transfer function itself.
 //
-// The slab crosses the table scalars between s_f and s_b; between two of them
-// (a "piece") tau and c are linear in the distance t along the ray, and the
-// pieces composite front to back.
+// The slab crosses the table scalars and the control points between s_f and
+// s_b; between two of them (a "piece") tau and c are linear in the distance t
+// along the ray, and the pieces composite front to back.
+#include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/slab_rgba.hpp"
@@ -42,9 +44,39 @@ double reach_of_depth(double a, double k, double depth);
 // tau = 1e35); saturated in double before the cast all the same.
 int panel_count(double a, double k, double x_max, double per_panel);
 
+// Sub-piece s between indices lo < hi inside it: its values there, exact at its ends.
+inline TfSample sub_piece_at(const SubPiece& s, double u) {
+  if (u <= s.u0) return s.p;
+  if (u >= s.u1) return s.q;
+  const double w = (u - s.u0) / (s.u1 - s.u0);
+  return {(1 - w) * s.p.r + w * s.q.r, (1 - w) * s.p.g + w * s.q.g, (1 - w) * s.p.b + w * s.q.b,
+          (1 - w) * s.p.tau + w * s.q.tau};
+}
+
+// The part [lo, hi] of a split bin's sub-pieces, composited in the direction
+// of travel (dir > 0: lo at the front) with piece(front, back, d), d =
+// per_index times the index span. Steps inside the bin are crossed exactly.
+template <class PieceFn>
+SlabRgba integrate_sub_pieces(std::span<const SubPiece> subs, double lo, double hi, double dir, double per_index,
+                              PieceFn& piece) {
+  SlabRgba acc;
+  const auto one = [&](const SubPiece& s) {
+    const double a = std::max(s.u0, lo), b = std::min(s.u1, hi);
+    if (!(b > a)) return;
+    const TfSample p = sub_piece_at(s, a), q = sub_piece_at(s, b);
+    acc = over(acc, dir > 0 ? piece(p, q, (b - a) * per_index) : piece(q, p, (b - a) * per_index));
+  };
+  if (dir > 0)
+    for (const SubPiece& s : subs) one(s);
+  else
+    for (auto it = subs.rbegin(); it != subs.rend(); ++it) one(*it);
+  return acc;
+}
+
 // The slab from continuous index u_f to u_b (DiscreteTf::at_index) of length
-// l, composited piece by piece with `piece(front, back, d)` -> SlabRgba.
-// u_f == u_b is the homogeneous slab. O(|u_b - u_f| + 1).
+// l, composited piece by piece with `piece(front, back, d)` -> SlabRgba: one
+// piece per plain bin (or part of one), one per sub-piece of a split bin.
+// u_f == u_b is the homogeneous slab. O(|u_b - u_f| + 1 + sub-pieces crossed).
 template <class PieceFn>
 SlabRgba integrate_slab(const DiscreteTf& tf, double u_f, double u_b, double length, PieceFn piece) {
   if (u_f == u_b) return homogeneous_slab(tf.at_index(u_f), length);
@@ -57,9 +89,16 @@ SlabRgba integrate_slab(const DiscreteTf& tf, double u_f, double u_b, double len
     // The next table scalar in the direction of travel, or u_b.
     double next = dir > 0 ? std::floor(u) + 1 : std::ceil(u) - 1;
     if (dir * (next - u_b) > 0) next = u_b;
-    const TfSample back = tf.at_index(next);
-    acc = over(acc, piece(front, back, std::abs(next - u) * per_index));
-    front = back;
+    const int bin = static_cast<int>(std::min(u, next));
+    const auto subs = tf.sub_pieces(bin);
+    if (subs.empty()) {
+      const TfSample back = tf.at_index(next);
+      acc = over(acc, piece(front, back, std::abs(next - u) * per_index));
+      front = back;
+    } else {
+      acc = over(acc, integrate_sub_pieces(subs, std::min(u, next), std::max(u, next), dir, per_index, piece));
+      front = tf.at_index(next);
+    }
     u = next;
   }
   return acc;

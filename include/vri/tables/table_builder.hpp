@@ -1,7 +1,7 @@
 #pragma once
 // TableBuilder: one way of computing a PreintegrationTable. Every builder
 // computes the same entries (slab_integral.hpp), exactly or approximately;
-// `brute` is the reference the others are tested against. Builders run on
+// `exact` is the reference the others are tested against. Builders run on
 // oneTBB and give the same bytes for any thread count.
 #include <tbb/parallel_for.h>
 
@@ -52,7 +52,7 @@ std::vector<Slice> build_length_slices(int lengths, double max_length, Build bui
   return slices;
 }
 
-// "brute", "incremental", "sliced" (its defaults), "engel"; throws vri::Error naming the known ones otherwise.
+// "brute", "incremental", "sliced" (its defaults), "engel", "exact"; throws vri::Error naming the known ones otherwise.
 std::unique_ptr<TableBuilder> make_table_builder(const std::string& name);
 const std::vector<std::string>& known_builder_names();
 

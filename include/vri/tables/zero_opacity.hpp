@@ -7,8 +7,10 @@
 //   for s in [lo, hi] has tau = 0 and slope 0, so tf(s).tau is exactly 0;
 // - from a DiscreteTf (pre-integrated methods): every table scalar x_i that a
 //   bilinear lookup at s in [lo, hi] gives a weight, i from floor(index(lo))
-//   to ceil(index(hi)), has tau = 0; a table entry (f, b) integrates the
-//   discretised function between x_f and x_b, so it is zero;
+//   to ceil(index(hi)), has tau = 0, and so has every bin between them (a
+//   bin split at control points, DiscreteTf::sub_pieces, with extinction
+//   inside counts as opaque at both its table scalars); a table entry (f, b)
+//   integrates the transfer function between x_f and x_b, so it is zero;
 // - from a DiscreteTf for second-order tables (preint2, TableOrder::Second):
 //   an entry (f, m, b) integrates along the parabola through the table
 //   scalars x_f, x_m, x_b (second_order_table.hpp), which leaves their range

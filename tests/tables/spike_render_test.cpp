@@ -1,0 +1,54 @@
+// preint1 on neghip with a spike narrower than one table bin
+// (scenes/neghip_spike.json: tau peaks at 2 at s = 100.5, zero outside
+// 100.2 .. 100.8, every table scalar of N = 256 at tau = 0). Before issue 16
+// the tables sampled only the table scalars and the spike vanished: alpha 0
+// where `exact` gives several hundredths.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "test_support.hpp"
+#include "vri/integrators/make_integrator.hpp"
+#include "vri/render/renderer.hpp"
+#include "vri/scene/scene.hpp"
+
+namespace vri {
+namespace {
+
+TEST(SpikeRender, Preint1SeesASpikeNarrowerThanOneBin) {
+  Scene scene = load_scene(test::source_path("scenes/neghip_spike.json"));
+  scene.camera.width = scene.camera.height = 40;
+  const Camera camera(scene.camera);
+  const auto exact = make_integrator({.name = "exact", .tolerance = 1e-6}, scene.grid(), scene.transfer_function);
+  const Image reference = render(camera, *exact);
+  double brightest = 0;
+  for (std::size_t k = 3; k < reference.data().size(); k += 4) brightest = std::max(brightest, double(reference.data()[k]));
+  ASSERT_GT(brightest, 0.03);  // the spike is there to be seen
+  for (const char* builder : {"incremental", "brute", "exact"}) {
+    const auto preint =
+        make_integrator({.name = "preint1", .step = 0.5, .table_size = 256, .builder = builder}, scene.grid(),
+                        scene.transfer_function);
+    const Image image = render(camera, *preint);
+    double worst = 0, worst_rel = 0, sum2 = 0;
+    for (std::size_t k = 3; k < image.data().size(); k += 4) {
+      const double e = reference.data()[k], p = image.data()[k];
+      worst = std::max(worst, std::abs(p - e));
+      sum2 += (p - e) * (p - e);
+      if (e > 0.02) worst_rel = std::max(worst_rel, std::abs(p - e) / e);
+    }
+    // What remains is preint1's bilinear lookup between table entries (a slab
+    // inside one bin reads the corners of that bin): measured worst 0.366 of
+    // 0.697, 68 % of one pixel, RMS 0.0102. Sampling only the table scalars
+    // gave 0 on every pixel (worst = brightest, 100 %).
+    EXPECT_LE(worst, 0.6 * brightest) << builder;
+    EXPECT_LE(worst_rel, 0.8) << builder;
+    EXPECT_LE(std::sqrt(sum2 / (image.data().size() / 4)), 0.02) << builder;
+    std::printf("%s: brightest exact alpha %.4f, worst |preint1 - exact| %.4f (%.0f %% of the pixel), RMS %.4f\n",
+                builder, brightest, worst, 100 * worst_rel, std::sqrt(sum2 / (image.data().size() / 4)));
+  }
+}
+
+}  // namespace
+}  // namespace vri
