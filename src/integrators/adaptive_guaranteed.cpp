@@ -25,8 +25,9 @@ double step_cap(const Cubic& s, const TfSegment& seg, double x, double y) {
   // The piece lies on one segment: tau and colour are linear in s between the
   // segment's ends (constant on the end regions), so their largest values and
   // slopes are the segment's.
+  // (The width in halves: it overflows for control points near -+1e308.)
   auto top = [&](double ref, double slope) {
-    return slope == 0 ? ref : std::max(ref, ref + slope * (seg.s_hi - seg.s_lo));
+    return slope == 0 ? ref : std::max(ref, ref + 2 * (slope * (0.5 * seg.s_hi - 0.5 * seg.s_lo)));
   };
   const double tau_max = top(seg.ref.tau, seg.slope.tau);
   const double dc_ds = std::max({std::abs(seg.slope.r), std::abs(seg.slope.g), std::abs(seg.slope.b)});
@@ -86,7 +87,9 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
     TfSample f[5];
     double at[5] = {};
     bool known[5] = {false, false, false, false, false};
-    const double hcap = std::min(hmax_, step_cap(s, seg, x, y));
+    // Not below the floor, where every step is accepted anyway: that keeps
+    // each step long enough to advance u whatever the cap (1 / huge tau).
+    const double hcap = std::max(hfloor_, std::min(hmax_, step_cap(s, seg, x, y)));
     simpson5::StepControl ctl{std::min(y - x, hcap)};
     // The early stop inside a piece too: a very opaque piece would otherwise
     // take y / hcap steps whatever T.

@@ -72,6 +72,25 @@ TEST(Guaranteed, SteepOpaqueRamp) {
   }
 }
 
+TEST(Guaranteed, ExtremeTransferFunctionsEndWithTheRightAnswer) {
+  // Control points near -+1e308 (the segment width overflows), and tau
+  // 1e300 (a step cap far below the floor): the first is a constant medium
+  // to within 1e-307, the second opaque at once with the colour at entry.
+  const auto vol = test::volume_from({11, 3, 3}, [](double x, double, double) { return x - 5; });
+  const Ray ray{{-5, 1, 1}, {1, 0, 0}};
+  const Rgba wide = GuaranteedAdaptiveIntegrator(vol, TransferFunction({{-1e308, 0, 0.2, 1, 0}, {1e308, 1, 0.2, 0, 0.8}}),
+                                                 {.tolerance = 1e-6})
+                        .integrate(ray);
+  const double alpha = 1 - std::exp(-0.4 * 10);
+  EXPECT_NEAR(wide[3], alpha, 1e-6);
+  EXPECT_NEAR(wide[0], 0.5 * alpha, 1e-6);
+  const Rgba dense =
+      GuaranteedAdaptiveIntegrator(vol, TransferFunction({{-5, 0.3, 0.6, 0.9, 1e300}}), {.tolerance = 1e-6}).integrate(ray);
+  EXPECT_EQ(dense[3], 1.0);
+  EXPECT_NEAR(dense[0], 0.3, 1e-6);
+  EXPECT_NEAR(dense[2], 0.9, 1e-6);
+}
+
 TEST(Guaranteed, RandomTransferFunctionsWithTwoToFortyPoints) {
   std::mt19937 rng(16);
   std::uniform_real_distribution<double> u(0, 1);
