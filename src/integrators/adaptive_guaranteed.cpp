@@ -10,6 +10,41 @@
 
 namespace vri {
 
+namespace {
+
+// What a piece can change over a step bounds the step (issue 16). The error
+// estimate |D - S|/15 only sees what five samples see: on a steep opaque ramp
+// (tau 0 -> 500 within a voxel) tau T e^{-depth} is a spike that a whole-piece
+// first try can put between its samples, all near zero, and accept. Capping
+// tau_max h (the optical depth a step can hold) at kDepthPerStep and the
+// colour's change over a step at kColourPerStep keeps every step in the range
+// where Simpson's rule resolves the integrand and the estimate is its error.
+constexpr double kDepthPerStep = 0.5, kColourPerStep = 0.25;
+
+double step_cap(const Cubic& s, const TfSegment& seg, double x, double y) {
+  // The piece lies on one segment: tau and colour are linear in s between the
+  // segment's ends (constant on the end regions), so their largest values and
+  // slopes are the segment's.
+  // (The width in halves: it overflows for control points near -+1e308.)
+  auto top = [&](double ref, double slope) {
+    return slope == 0 ? ref : std::max(ref, ref + 2 * (slope * (0.5 * seg.s_hi - 0.5 * seg.s_lo)));
+  };
+  const double tau_max = top(seg.ref.tau, seg.slope.tau);
+  const double dc_ds = std::max({std::abs(seg.slope.r), std::abs(seg.slope.g), std::abs(seg.slope.b)});
+  // max |s'(t)| on [x, y]: s' is a quadratic, largest at an end or its vertex.
+  double ds_dt = std::max(std::abs(s.derivative(x)), std::abs(s.derivative(y)));
+  if (s.c[3] != 0) {
+    const double v = -s.c[2] / (3 * s.c[3]);
+    if (v > x && v < y) ds_dt = std::max(ds_dt, std::abs(s.derivative(v)));
+  }
+  double cap = INFINITY;
+  if (tau_max > 0) cap = kDepthPerStep / tau_max;
+  if (dc_ds * ds_dt > 0) cap = std::min(cap, kColourPerStep / (dc_ds * ds_dt));
+  return cap;
+}
+
+}  // namespace
+
 GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& volume,
                                                            const TransferFunction& tf,
                                                            const AdaptiveParams& params,
@@ -40,7 +75,7 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
   const double depth_density = colour_density / brightest;
   const double cutoff = 0.1 * tolerance_ / brightest;
   double T = 1;
-  Rgba C{0, 0, 0, 0};
+  double C[3] = {0, 0, 0};
 
   // Lit: the gradient along the current cell, three cubics in t from the cell entry.
   Cubic grad[3];
@@ -52,8 +87,13 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
     TfSample f[5];
     double at[5] = {};
     bool known[5] = {false, false, false, false, false};
-    simpson5::StepControl ctl{std::min(y - x, hmax_)};
-    for (double u = x; u < y;) {
+    // Not below the floor, where every step is accepted anyway: that keeps
+    // each step long enough to advance u whatever the cap (1 / huge tau).
+    const double hcap = std::max(hfloor_, std::min(hmax_, step_cap(s, seg, x, y)));
+    simpson5::StepControl ctl{std::min(y - x, hcap)};
+    // The early stop inside a piece too: a very opaque piece would otherwise
+    // take y / hcap steps whatever T.
+    for (double u = x; u < y && T > cutoff;) {
       const double h = std::min(ctl.h, y - u);
       for (int k = 0; k < 5; ++k) {
         const double p = u + h * (0.25 * k);
@@ -78,13 +118,10 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
         ctl.failed(h, hfloor_);
         continue;
       }
-      for (int c = 0; c < 4; ++c) {
-        C[c] += simpson5::corrected(st.D[c], st.S[c]);
-        stats.error_estimate[c] += simpson5::error(st.D[c], st.S[c]) + depth_err;
-      }
-      T *= std::exp(-st.depth[4]);
-      if (stats.record_steps) stats.steps.push_back({true, ta + u, h, C[3]});
-      ctl.succeeded(hmax_);
+      for (int c = 0; c < 4; ++c) stats.error_estimate[c] += simpson5::error(st.D[c], st.S[c]) + depth_err;
+      T = simpson5::add_step(st, T, C);
+      if (stats.record_steps) stats.steps.push_back({true, ta + u, h, 1 - T});
+      ctl.succeeded(hcap);
       f[0] = f[4], at[0] = at[4];
       std::fill(known + 1, known + 5, false);
       u = h >= y - u ? y : u + h;
@@ -107,7 +144,7 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
     });
     return T > cutoff;
   });
-  return C;
+  return {C[0], C[1], C[2], 1 - T};
 }
 
 }  // namespace vri

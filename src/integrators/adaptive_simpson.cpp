@@ -77,7 +77,7 @@ Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const
 
   const double t_end = iv->t1;
   double T = 1;  // transmittance at the start of the next outer step
-  Rgba C{0, 0, 0, 0};
+  double C[3] = {0, 0, 0};
   simpson5::StepControl inner{h0_}, outer{h0_};
 
   // I_O of Algorithm 3: colour and alpha over [a, b].
@@ -93,12 +93,9 @@ Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const
       double tau_s, tau_d;
       tau_integrals(h, tau_s, tau_d);
       const double depth_err = T * simpson5::error(tau_d, tau_s);
-      for (int c = 0; c < 4; ++c) {
-        C[c] += simpson5::corrected(st.D[c], st.S[c]);
-        stats.error_estimate[c] += simpson5::error(st.D[c], st.S[c]) + depth_err;
-      }
-      T *= std::exp(-st.depth[4]);
-      if (stats.record_steps) stats.steps.push_back({true, u, h, C[3]});
+      for (int c = 0; c < 4; ++c) stats.error_estimate[c] += simpson5::error(st.D[c], st.S[c]) + depth_err;
+      T = simpson5::add_step(st, T, C);
+      if (stats.record_steps) stats.steps.push_back({true, u, h, 1 - T});
       outer.succeeded(hmax_);
       u = h >= b - u ? b : u + h;
     }
@@ -125,7 +122,7 @@ Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const
     }
     t = b;
   }
-  return C;
+  return {C[0], C[1], C[2], 1 - T};
 }
 
 }  // namespace vri

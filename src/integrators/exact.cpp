@@ -23,9 +23,13 @@ Rgba ExactIntegrator::integrate(const Ray& ray) const {
   const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
   if (!iv) return {0, 0, 0, 0};
   Accumulator acc;
-  const double error_per_length = tolerance_ / iv->length();
+  // The tolerance is on colours up to 1; lit colours reach max_brightness, and
+  // the budget scales with it (issue 16): with specular 1e300 the rounding of
+  // |N.d| near its zero alone is far above an absolute 1e-6.
+  const double brightest = std::max(1.0, shader_ ? shader_->max_brightness() : 1.0);
+  const double error_per_length = tolerance_ * brightest / iv->length();
   // What is left after stopping is at most T * (brightest colour) per channel.
-  const double cutoff = 0.1 * tolerance_ / std::max(1.0, shader_ ? shader_->max_brightness() : 1.0);
+  const double cutoff = 0.1 * tolerance_ / brightest;
   for_each_cell_segment(volume_, ray, *iv, [&](const CellSegment& seg) {
     integrate_cell(seg, ray.dir, error_per_length, acc);
     return acc.T > cutoff;

@@ -1,10 +1,14 @@
 #include "vri/integrators/piece_integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 #include "cubic.hpp"
 #include "gauss_kronrod.hpp"
 #include "tf_pieces.hpp"
+#include "vri/core/error.hpp"
 
 namespace vri {
 
@@ -27,7 +31,18 @@ struct Piece {
 
 }  // namespace
 
-PieceIntegrator::PieceIntegrator(const TransferFunction& tf) : splitter_(std::make_unique<TfPieceSplitter>(tf)) {}
+long PieceIntegrator::default_max_panels() {
+  const char* v = std::getenv(kMaxPanelsVariable);
+  if (!v || !*v) return kDefaultMaxPanels;
+  char* end = nullptr;
+  const long n = std::strtol(v, &end, 10);
+  if (*end != 0 || n <= 0)
+    throw Error(std::string(kMaxPanelsVariable) + " must be a positive integer, got '" + v + "'");
+  return n;
+}
+
+PieceIntegrator::PieceIntegrator(const TransferFunction& tf, long max_panels)
+    : splitter_(std::make_unique<TfPieceSplitter>(tf)), max_panels_(max_panels) {}
 
 PieceIntegrator::~PieceIntegrator() = default;
 
@@ -44,19 +59,26 @@ void PieceIntegrator::integrate(const Cubic& s, double len, double error_per_len
     auto integrate_smooth = [&](double a0, double b0) {
       if (!(b0 > a0)) return;
       const double pa = pc.P(a0);
+      // The segment's values lie between its ends' (tau >= 0, colour in
+      // [0, 1]); clamping keeps rounding in s(t) - s_ref, times a steep slope,
+      // from leaving that range. exp(...) <= 1: optical depth only grows.
       auto f = [&](double t, double (&out)[3]) {
         const double ds = s(t) - seg.s_ref;
-        const double w = pc.tau(t) * std::exp(pa - pc.P(t));
+        const double w = std::max(pc.tau(t), 0.0) * std::exp(std::min(pa - pc.P(t), 0.0));
         const auto terms = lit ? lit->shader->terms({lit->grad[0](t), lit->grad[1](t), lit->grad[2](t)}, lit->dir)
                                : HeadlightShader::Terms{1, 0};
-        out[0] = ((seg.ref.r + seg.slope.r * ds) * terms.a + terms.b) * w;
-        out[1] = ((seg.ref.g + seg.slope.g * ds) * terms.a + terms.b) * w;
-        out[2] = ((seg.ref.b + seg.slope.b * ds) * terms.a + terms.b) * w;
+        out[0] = (std::clamp(seg.ref.r + seg.slope.r * ds, 0.0, 1.0) * terms.a + terms.b) * w;
+        out[1] = (std::clamp(seg.ref.g + seg.slope.g * ds, 0.0, 1.0) * terms.a + terms.b) * w;
+        out[2] = (std::clamp(seg.ref.b + seg.slope.b * ds, 0.0, 1.0) * terms.a + terms.b) * w;
       };
       // Adaptive Gauss-Kronrod, iterative, depth first. The error allowed on
-      // the unattenuated integral is the piece's share of the budget over T.
+      // the unattenuated integral is the piece's share of the budget over T,
+      // and never below what rounding leaves of the panel's own value
+      // (kRelative of it): an absolute target alone is out of reach when the
+      // integrand is huge (specular 1e10) and would subdivide to the depth cap.
       const double T_in = acc.T;
       const double density = error_per_length / T_in;
+      constexpr double kRelative = 1e-12;
       struct Item {
         double a, b;
         int depth;
@@ -68,8 +90,13 @@ void PieceIntegrator::integrate(const Cubic& s, double len, double error_per_len
       while (top > 0) {
         const Item it = stack[--top];
         double k[3];
+        if (++acc.panels > max_panels_)
+          throw Error("exact: a ray needed more than " + std::to_string(max_panels_) +
+                      " Gauss-Kronrod panels (the cap on work per ray); loosen the tolerance, or raise the cap "
+                      "with the environment variable " + std::string(kMaxPanelsVariable));
         const double err = gk15::apply<3>(f, it.a, it.b, k);
-        if (err <= density * (it.b - it.a) || it.depth >= 40) {
+        const double size = std::max({std::abs(k[0]), std::abs(k[1]), std::abs(k[2])});
+        if (err <= std::max(density * (it.b - it.a), kRelative * size) || it.depth >= 40) {
           for (int c = 0; c < 3; ++c) sum[c] += k[c];
         } else {
           const double m = 0.5 * (it.a + it.b);
@@ -78,7 +105,7 @@ void PieceIntegrator::integrate(const Cubic& s, double len, double error_per_len
         }
       }
       for (int c = 0; c < 3; ++c) acc.C[c] += T_in * sum[c];
-      acc.T = T_in * std::exp(pa - pc.P(b0));
+      acc.T = T_in * std::exp(std::min(pa - pc.P(b0), 0.0));
     };
     double prev = x;
     for (int k = 0; lit && k < lit->nkinks; ++k)

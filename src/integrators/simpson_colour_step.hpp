@@ -46,4 +46,21 @@ inline ColourStep colour_step(const TfSample (&f)[5], double T, double h) {
   return st;
 }
 
+// Adds an accepted step to the premultiplied colour C and returns the
+// transmittance after it. Opacity is 1 - T with T = exp(-optical depth) (SPEC
+// §4): the step's opacity is T (1 - e^{-depth}) exactly for its optical depth,
+// not the Simpson estimate of the fourth channel (which an under-resolved
+// step can push past 1). The step's colour is its Boole estimate rescaled to
+// that opacity: Boole's weights are positive, so the colour is a weighted mean
+// of the samples' (lit) chromaticities times the opacity, never more than the
+// brightest sample times it. On an accurate step the rescaling is ~1.
+inline double add_step(const ColourStep& st, double T, double (&C)[3]) {
+  const double T_after = T * std::exp(-st.depth[4]);
+  const double opacity = T - T_after;
+  const double boole_opacity = corrected(st.D[3], st.S[3]);
+  const double scale = boole_opacity > 0 ? opacity / boole_opacity : 0;
+  for (int c = 0; c < 3; ++c) C[c] += scale * corrected(st.D[c], st.S[c]);
+  return T_after;
+}
+
 }  // namespace vri::simpson5

@@ -1,5 +1,6 @@
 #include "vri/shading/headlight_shader.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "vri/core/error.hpp"
@@ -21,7 +22,9 @@ HeadlightShader::HeadlightShader(const Lighting& l, double flat_threshold)
 HeadlightShader::Terms HeadlightShader::terms(Vec3 g, Vec3 dir) const {
   const double len = length(g);
   if (!(len >= flat_) || len == 0) return {ka_ + kd_, 0.0};
-  const double x = std::abs(dot(g, dir)) / len;
+  // |N.d| <= 1, but rounding can give 1 + ulp, which a huge shininess turns
+  // into an overflow (issue 16).
+  const double x = std::min(std::abs(dot(g, dir)) / len, 1.0);
   return {ka_ + kd_ * x, ks_ * std::pow(x, p_)};
 }
 

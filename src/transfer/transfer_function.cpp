@@ -29,6 +29,16 @@ TransferFunction::TransferFunction(std::vector<ControlPoint> points) : points_(s
     if (!(p.tau >= 0) || !std::isfinite(p.tau))
       throw Error(where + ": tau must be finite and >= 0, got " + std::to_string(p.tau));
   }
+  // Points closer than kMergeDistance of the scalar range to the first point
+  // of their group join it (issue 16): a piece a few ulps wide has a slope no
+  // integrator can evaluate without cancellation. At a shared s the later
+  // point holds (below), so the merge keeps SPEC §3's step. The range is
+  // taken in halves so that +-1e308 does not overflow.
+  const double merge = kMergeDistance * 2 * (0.5 * points_.back().s - 0.5 * points_.front().s);
+  for (std::size_t i = 1, first = 0; i < points_.size(); ++i) {
+    if (points_[i].s - points_[first].s <= merge) points_[i].s = points_[first].s;
+    else first = i;
+  }
   // Breakpoints and the linear pieces between them. Among points sharing one s,
   // the last is the left end of the piece above and the first the right end of
   // the piece below, so at exactly that s the later point holds.
@@ -42,9 +52,11 @@ TransferFunction::TransferFunction(std::vector<ControlPoint> points) : points_(s
     if (last + 1 < points_.size()) {
       const auto& a = points_[last];
       const auto& b = points_[last + 1];
-      const double w = b.s - a.s;
+      // In halves where the width overflows (points near -+1e308).
+      const double w = b.s - a.s, k = std::isfinite(w) ? 1.0 : 0.5, kw = std::isfinite(w) ? w : k * b.s - k * a.s;
       segments_.push_back({a.s, b.s, a.s, values_of(a),
-                           {(b.r - a.r) / w, (b.g - a.g) / w, (b.b - a.b) / w, (b.tau - a.tau) / w}});
+                           {k * (b.r - a.r) / kw, k * (b.g - a.g) / kw, k * (b.b - a.b) / kw,
+                            k * (b.tau - a.tau) / kw}});
     }
     i = last + 1;
   }

@@ -24,6 +24,7 @@ class PieceIntegrator {
   struct Accumulator {
     double T = 1;
     double C[3] = {0, 0, 0};
+    long panels = 0;  // Gauss-Kronrod panels spent on this ray so far
   };
   // Lighting along the piece (SPEC §5): c_lit = c a + b with the shader's terms
   // for the gradient grad(t) (three cubics); the terms have kinks where N.d
@@ -36,8 +37,17 @@ class PieceIntegrator {
     int nkinks;
   };
 
+  // The cap on work per ray: integrate() throws vri::Error (naming the cap and
+  // kMaxPanelsVariable) once one accumulator has spent more panels. A panel is
+  // 15 evaluations; the default is far beyond any real ray (a 512^3 diagonal
+  // crosses ~1500 cells and a few panels each), so only pathological input hits it.
+  static constexpr long kDefaultMaxPanels = 1000000;
+  static constexpr const char* kMaxPanelsVariable = "VRI_EXACT_MAX_PANELS";
+  // kDefaultMaxPanels, or the value of the environment variable kMaxPanelsVariable.
+  static long default_max_panels();
+
   // Keeps a reference to tf.
-  explicit PieceIntegrator(const TransferFunction& tf);
+  explicit PieceIntegrator(const TransferFunction& tf, long max_panels = default_max_panels());
   ~PieceIntegrator();
 
   // Integrates s(t), t in [0, len], into acc; unlit when lit is null.
@@ -49,6 +59,7 @@ class PieceIntegrator {
 
  private:
   std::unique_ptr<const TfPieceSplitter> splitter_;
+  long max_panels_;
 };
 
 }  // namespace vri

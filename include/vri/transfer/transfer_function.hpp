@@ -34,7 +34,9 @@ struct TfSegment {
 class TransferFunction {
  public:
   // Validates: at least one point, s finite and non-decreasing, r,g,b in [0,1],
-  // tau finite and >= 0. Throws vri::Error naming the offending point.
+  // tau finite and >= 0. Throws vri::Error naming the offending point. Points
+  // within kMergeDistance x (s_hi - s_lo) of an earlier point take its s.
+  static constexpr double kMergeDistance = 1e-12;
   explicit TransferFunction(std::vector<ControlPoint> points);
 
   // VTK's opacity form: per point tau = -ln(1 - a) / unit_distance, a in [0, 1).
