@@ -12,7 +12,7 @@ render() {  # scene out.npy args... -> prints seconds
   "$vri" render "$1" -o "$2" --width "$size" --height "$size" "${@:3}" 2>&1 | sed -n 's/.* in \([0-9.e-]*\) s.*/\1/p'
 }
 colour_err() {  # reference image: worst r, g, b RMS / max / share
-  "$vri" compare "$1" "$2" | awk 'NR > 1 && $1 != "a" { if ($3 > r) r = $3; if ($4 > m) m = $4; if ($2 > s) s = $2 }
+  "$vri" compare "$1" "$2" --max-share 1 | awk 'NR > 1 && $1 != "a" { if ($3 > r) r = $3; if ($4 > m) m = $4; if ($2 > s) s = $2 }
                                   END { printf "%.2e | %.2e | %.1f%%", r, m, 100 * s }'
 }
 shading_err() {  # lit unlit lit_exact unlit_exact

@@ -13,9 +13,12 @@ RaySignal::RaySignal(const GridVolume& volume, const Ray& ray, std::optional<dou
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) throw Error("the ray misses the volume");
   if (step) {
-    if (!(*step > 0)) throw Error("ray step must be positive");
-    const long long n = static_cast<long long>(std::ceil(iv->length() / *step));
-    if (n > 10'000'000) throw Error("ray step is too small for this ray");
+    if (!(*step > 0) || !std::isfinite(*step)) throw Error("ray step must be a finite number > 0");
+    // At least one interval (a step longer than the ray left none: issue 17),
+    // and the count is bounded before the cast.
+    const double intervals = std::max(1.0, std::ceil(iv->length() / *step));
+    if (!(intervals <= 10'000'000)) throw Error("ray step is too small for this ray");
+    const long long n = static_cast<long long>(intervals);
     for (long long k = 0; k < n; ++k) t_.push_back(iv->t0 + k * *step);
     t_.push_back(iv->t1);
   } else {

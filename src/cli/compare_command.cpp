@@ -1,11 +1,14 @@
-// vri compare A.npy B.npy [--tolerance E]: per channel, the share of pixels
-// whose absolute difference exceeds E, the RMS and the maximum difference.
+// vri compare A.npy B.npy [--tolerance E] [--max-share F]: per channel, the
+// share of pixels whose absolute difference exceeds E, the RMS and the
+// maximum difference; exit status 1 when a channel has more than the share F
+// (default 0) of pixels over E (SPEC §11).
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "commands.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 #include "vri/io/npy.hpp"
 #include "vri/render/image_compare.hpp"
 
@@ -16,10 +19,13 @@ namespace {
 struct CompareArgs {
   std::string a, b;
   double tolerance = 1.0 / 255.0;
+  double max_share = 0;
 };
 
 int run_compare(const CompareArgs& args) {
-  if (!(args.tolerance >= 0)) throw Error("--tolerance must be >= 0");
+  if (!(args.tolerance >= 0)) throw Error("--tolerance: expected a number >= 0, found " + format_g(args.tolerance));
+  if (!(args.max_share >= 0 && args.max_share <= 1))
+    throw Error("--max-share: expected a number in [0, 1], found " + format_g(args.max_share));
   const NpyArray a = read_npy(args.a), b = read_npy(args.b);
   if (a.shape != b.shape) throw Error("'" + args.a + "' and '" + args.b + "' have different shapes");
   const int channels = a.shape.size() >= 3 ? int(a.shape.back()) : 1;
@@ -30,7 +36,9 @@ int run_compare(const CompareArgs& args) {
     const std::string name = channels == 4 ? rgba[c] : std::to_string(c);
     std::printf("%-7s  %-15.6f  %-12.6e  %-12.6e\n", name.c_str(), diff[c].share_over, diff[c].rms, diff[c].max);
   }
-  return 0;
+  bool over = false;
+  for (int c = 0; c < channels; ++c) over = over || !(diff[c].share_over <= args.max_share);
+  return over ? 1 : 0;
 }
 
 }  // namespace
@@ -41,6 +49,7 @@ Runner add_compare_command(CLI::App& app) {
   cmd->add_option("a", args->a, "First image (.npy)")->required();
   cmd->add_option("b", args->b, "Second image (.npy)")->required();
   cmd->add_option("--tolerance", args->tolerance, "Difference counted as over (default 1/255)");
+  cmd->add_option("--max-share", args->max_share, "Share of pixels allowed over the tolerance (default 0)");
   return [args] { return run_compare(*args); };
 }
 

@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/memory_limit.hpp"
+#include "vri/io/output_transaction.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"vri: volume rendering with measurable accuracy"};
@@ -46,12 +47,17 @@ int main(int argc, char** argv) {
     std::cerr << "vri: error: " << e.what() << " (see vri --help)\n";
     return 2;
   }
+  vri::remove_temporaries_on_signal();
   try {
-    if (app.got_subcommand("render")) return render();
-    if (app.got_subcommand("compare")) return compare();
-    if (app.got_subcommand("table")) return table();
-    if (app.got_subcommand("ray")) return ray();
-    return 2;
+    // Every file of the command is renamed into place only once it succeeded.
+    vri::OutputTransaction outputs;
+    const vri::cli::Runner& run = app.got_subcommand("render")    ? render
+                                  : app.got_subcommand("compare") ? compare
+                                  : app.got_subcommand("table")   ? table
+                                                                  : ray;
+    const int code = run();
+    if (code == 0) outputs.commit();
+    return code;
   } catch (const vri::Error& e) {
     std::cerr << "vri: error: " << e.what() << "\n";
   } catch (const std::bad_alloc&) {

@@ -2,6 +2,7 @@
 // the scalar signal along one pixel's ray and its 0th/1st/2nd-order
 // approximations with their errors xi (see vri/analysis/ray_signal.hpp).
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "vri/analysis/ray_signal.hpp"
 #include "vri/camera/camera.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 #include "vri/io/file_io.hpp"
 #include "vri/scene/scene.hpp"
 
@@ -40,7 +42,8 @@ int run_ray(const RayArgs& args) {
   if (px < 0 || py < 0 || px >= camera.width() || py >= camera.height())
     throw Error("pixel (" + std::to_string(px) + ", " + std::to_string(py) + ") is outside the " +
                 std::to_string(camera.width()) + "x" + std::to_string(camera.height()) + " image");
-  if (args.step && !(*args.step >= 1e-4)) throw Error("--step must be at least 1e-4 voxel units");
+  if (args.step && !(*args.step >= 1e-4 && std::isfinite(*args.step)))
+    throw Error("--step: expected a finite number >= 1e-4 (voxel units), found " + format_g(*args.step));
   const std::optional<double> step =
       args.step ? std::optional<double>(*args.step * scene.grid().voxel_unit()) : std::nullopt;
   const RaySignal sig(scene.grid(), camera.ray(px, py), step);
@@ -49,7 +52,7 @@ int run_ray(const RayArgs& args) {
   std::ostringstream csv;
   csv.precision(10);
   csv << "# vri ray: pixel " << px << " " << py << ", "
-      << (args.step ? "step " + std::to_string(*args.step) + " voxel units" : std::string("cell faces + midpoints"))
+      << (args.step ? "step " + format_g(*args.step) + " voxel units" : std::string("cell faces + midpoints"))
       << "\n# xi0 = " << xi[0] << ", xi1 = " << xi[1] << ", xi2 = " << xi[2] << "\n"
       << "t,signal,order0,order1,order2,is_sample\n";
   constexpr int kRowsPerInterval = 8;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "render_checks.hpp"
 #include "vri/core/error.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
 #include "vri/integrators/make_integrator.hpp"
@@ -33,7 +34,7 @@ namespace {
 struct RenderArgs {
   std::string scene, output;
   std::optional<std::string> method;
-  std::optional<double> step, tolerance, termination;
+  std::optional<double> step, tolerance, termination, max_samples, max_work;
   bool no_skip = false, double_math = false;
   std::optional<int> table_size, iterations, width, height;
   int threads = 0;
@@ -67,7 +68,7 @@ int run_render(const RenderArgs& args) {
   const std::string ext = out.extension().string();
   if (ext != ".npy" && ext != ".png")
     throw Error("output '" + args.output + "' must end in .npy or .png");
-  if (args.threads < 0) throw Error("--threads must be >= 0");
+  const int threads = checked_threads(args.threads);
 
   Scene scene = load_scene(args.scene);
   if (args.method) scene.method.name = *args.method;
@@ -87,11 +88,15 @@ int run_render(const RenderArgs& args) {
   if (args.termination) scene.method.fast.termination = *args.termination;
   if (args.no_skip) scene.method.fast.skip_empty = false;
   if (args.double_math) scene.method.fast.float_math = false;
+  if (args.max_samples) scene.method.max_samples = *args.max_samples;
+  if (args.max_work) scene.method.max_work = *args.max_work;
+  check_method_parameters(scene.method);
   if (args.error_estimate && std::filesystem::path(*args.error_estimate).extension() != ".npy")
     throw Error("--error-estimate '" + *args.error_estimate + "' must end in .npy");
   if (args.trace.has_value() != !args.trace_pixel.empty()) throw Error("--trace and --trace-pixel go together");
 
   const Camera camera(scene.camera);
+  check_work(scene, camera);  // before any table is built
   // `pt` and `pt-cylindrical` project whole tetrahedra; every other method integrates ray by ray.
   const std::string& name = scene.method.name;
   const bool projected = name == "pt" || name == "pt-cylindrical";
@@ -133,22 +138,27 @@ int run_render(const RenderArgs& args) {
   }
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();  // process CPU time, all threads
-  const RenderOptions options{.threads = args.threads};
+  const RenderOptions options{.threads = threads};
   const Image image = cylinder   ? render_projected(camera, scene.mesh(), *cylinder, options, scene.lighting,
                                                    weighted_cylinder ? &*weighted_cylinder : nullptr)
                       : projected ? render_projected(camera, scene.mesh(), *table, options, scene.lighting, weighted.get())
                                   : render(camera, *integrator, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-  Image estimate;
-  if (args.error_estimate) estimate = render_error_estimate(camera, *estimating, {.threads = args.threads});
+  // Each output is staged as soon as it exists; main() commits them together.
+  refuse_non_finite(image, "the rendered image");
+  if (ext == ".npy") write_npy(out, image);
+  else write_png(out, image, scene.background);
+  if (args.error_estimate) {
+    const Image estimate = render_error_estimate(camera, *estimating, {.threads = threads});
+    refuse_non_finite(estimate, "the error estimate");
+    write_npy(*args.error_estimate, estimate);
+  }
   std::string trace;
   if (args.trace)
     trace = trace_csv(camera.ray(args.trace_pixel[0], args.trace_pixel[1]), *estimating, scene.grid().voxel_unit());
-  if (ext == ".npy") write_npy(out, image);
-  else write_png(out, image, scene.background);
-  if (args.error_estimate) write_npy(*args.error_estimate, estimate);
   if (args.trace) write_file_atomically(*args.trace, std::as_bytes(std::span(trace.data(), trace.size())));
+  warn_if_transparent(image, scene, camera);
   std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '"
             << (projected ? name : std::string(integrator->name()))
             << "' in " << seconds << " s (CPU " << cpu_seconds << " s) -> " << args.output << "\n";
@@ -180,7 +190,9 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_flag("--double", args->double_math, "riemann, preint1, preint2: sample, look up and composite in double (the reference of their float paths)");
   cmd->add_option("--width", args->width, "Image width in pixels");
   cmd->add_option("--height", args->height, "Image height in pixels");
-  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)");
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores; at most 1024)");
+  cmd->add_option("--max-samples", args->max_samples, "Cap on samples per ray (default 1e7; scene method.max_samples)");
+  cmd->add_option("--max-work", args->max_work, "Cap on samples per ray x pixels (default 2e10; scene method.max_work)");
   cmd->add_option("--h0", args->h0, "adaptive: initial step (voxel units)");
   cmd->add_option("--hmin", args->hmin, "adaptive: smallest step (voxel units)");
   cmd->add_option("--hmax", args->hmax, "adaptive: largest step (voxel units)");

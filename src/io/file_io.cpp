@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "vri/core/error.hpp"
+#include "vri/io/output_transaction.hpp"
 
 namespace vri {
 
@@ -47,34 +48,10 @@ void read_file_range(const fs::path& path, std::uint64_t offset, std::span<std::
 }
 
 void write_file_atomically(const fs::path& path, std::span<const std::byte> bytes) {
-  const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw Error("cannot write '" + path.string() + "': directory '" + dir.string() +
-                "' does not exist");
-  std::string tmp_name = ".";  // hidden temporary beside the target
-  tmp_name += path.filename().string();
-  tmp_name += ".tmp";
-  tmp_name += std::to_string(::getpid());
-  const fs::path tmp = dir / tmp_name;
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw Error("cannot write '" + tmp.string() + "': " + std::strerror(errno));
-    out.write(reinterpret_cast<const char*>(bytes.data()),
-              static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) {
-      out.close();
-      fs::remove(tmp, ec);
-      throw Error("cannot write '" + path.string() + "': write failed");
-    }
-  }
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignore;
-    fs::remove(tmp, ignore);
-    throw Error("cannot write '" + path.string() + "': " + ec.message());
-  }
+  if (OutputTransaction* active = OutputTransaction::active()) return active->stage(path, bytes);
+  OutputTransaction own;
+  own.stage(path, bytes);
+  own.commit();
 }
 
 }  // namespace vri

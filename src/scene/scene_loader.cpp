@@ -1,12 +1,18 @@
-// Scene JSON (SPEC §8) -> Scene. Unknown keys are ignored (the format may
-// grow); known keys are checked for type and range.
+// Scene JSON (SPEC §8) -> Scene. Unknown keys are errors with the nearest
+// known key suggested (a typo is never ignored); known keys are checked for
+// type and range, and every message names the file and the key path.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <initializer_list>
+#include <span>
 #include <optional>
 #include <string>
 
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 #include "vri/io/file_io.hpp"
 #include "vri/io/nrrd.hpp"
 #include "vri/io/raw_volume.hpp"
@@ -14,6 +20,7 @@
 #include "vri/io/vtk_legacy.hpp"
 #include "vri/io/vtu.hpp"
 #include "vri/tables/second_order_table.hpp"
+#include "vri/tables/table_builder.hpp"
 #include "vri/mesh/tetrahedralize.hpp"
 #include "vri/scene/scene.hpp"
 #include "vri/volume/builtin_volumes.hpp"
@@ -25,13 +32,14 @@ using json = nlohmann::json;
 
 namespace {
 
+// nlohmann's parse errors carry the byte offset; they gain the file's name.
 json parse_json(std::string_view text, const std::string& source) {
   try {
     return json::parse(text);
   } catch (const json::exception& e) {  // parse_error, or out_of_range for a number like 1E99999
     std::string what = e.what();
     if (auto p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
-    throw Error(source + ": malformed JSON: " + what);
+    throw Error(source + ": malformed JSON: " + printable(what, 200));
   }
 }
 
@@ -40,49 +48,120 @@ std::string text_of(const fs::path& path) {
   return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 }
 
-// Typed access with errors naming the key.
+// A JSON value as the user wrote it, escaped and short, for "found ...".
+std::string found(const json& v) {
+  return printable(v.dump(-1, ' ', false, json::error_handler_t::replace), 40);
+}
+
+// Levenshtein distance, for "did you mean" on unknown keys.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t k = 0; k <= b.size(); ++k) row[k] = k;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t k = 1; k <= b.size(); ++k) {
+      const std::size_t up = row[k];
+      row[k] = std::min({row[k] + 1, row[k - 1] + 1, diag + (a[i - 1] != b[k - 1])});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// Typed access to one object of the scene; every error names the file, the
+// key path, what was expected and what was found.
 struct Reader {
-  std::string ctx;  // e.g. "scene 'a.json': camera"
+  std::string file;  // e.g. "scene 'a.json'"
+  std::string path;  // e.g. "camera", "" at the top
+
+  std::string ctx() const { return path.empty() ? file : file + ": " + path; }
+  std::string where(const std::string& key) const { return file + ": " + (path.empty() ? key : path + "." + key); }
+  Reader child(const std::string& key) const { return {file, path.empty() ? key : path + "." + key}; }
+  [[noreturn]] void expected(const std::string& key, const std::string& what, const json& v) const {
+    throw Error(where(key) + ": expected " + what + ", found " + found(v));
+  }
 
   const json& object(const json& j) const {
-    if (!j.is_object()) throw Error(ctx + " must be a JSON object");
+    if (!j.is_object()) throw Error(ctx() + ": expected a JSON object, found " + found(j));
     return j;
+  }
+  // Unknown keys are errors (a typo would otherwise be ignored silently).
+  void known(const json& j, std::initializer_list<std::string_view> keys) const {
+    known(j, std::span<const std::string_view>(keys.begin(), keys.size()));
+  }
+  void known(const json& j, std::span<const std::string_view> keys) const {
+    for (const auto& item : j.items()) {
+      const std::string& key = item.key();
+      if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
+      std::string_view best;
+      std::size_t best_d = std::string::npos;
+      for (std::string_view k : keys)
+        if (const std::size_t d = edit_distance(key, k); d < best_d) best = k, best_d = d;
+      std::string msg = where(printable(key, 40)) + ": unknown key";
+      if (best_d <= std::max<std::size_t>(2, best.size() / 3)) {
+        msg += " (did you mean '" + std::string(best) + "'?)";
+      } else {
+        msg += " (known:";
+        for (std::string_view k : keys) (msg += ' ') += k;
+        msg += ")";
+      }
+      throw Error(msg);
+    }
   }
   double number(const json& j, const char* key, std::optional<double> def = std::nullopt) const {
     if (!j.contains(key)) {
       if (def) return *def;
-      throw Error(ctx + ": missing '" + key + "'");
+      throw Error(ctx() + ": missing '" + key + "'");
     }
     const json& v = j.at(key);
-    if (!v.is_number() || !std::isfinite(v.get<double>()))
-      throw Error(ctx + ": '" + key + "' must be a finite number");
+    if (!v.is_number() || !std::isfinite(v.get<double>())) expected(key, "a finite number", v);
     return v.get<double>();
   }
+  // Checked conversion: the value is tested against the range before any cast.
+  std::int64_t integer_in(const json& j, const char* key, std::int64_t lo, std::int64_t hi,
+                          std::optional<std::int64_t> def = std::nullopt) const {
+    if (!j.contains(key)) {
+      if (def) return *def;
+      throw Error(ctx() + ": missing '" + key + "'");
+    }
+    const json& v = j.at(key);
+    const std::string want = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (v.is_number_unsigned()) {
+      const std::uint64_t u = v.get<std::uint64_t>();
+      if (u > std::uint64_t(hi) || (lo > 0 && u < std::uint64_t(lo))) expected(key, want, v);
+      return std::int64_t(u);
+    }
+    if (v.is_number_integer()) {
+      if (v.get<std::int64_t>() < lo || v.get<std::int64_t>() > hi) expected(key, want, v);
+      return v.get<std::int64_t>();
+    }
+    const double d = v.is_number_float() ? v.get<double>() : 0.5;
+    if (!(d >= double(lo) && d <= double(hi)) || d != std::floor(d)) expected(key, want, v);
+    return static_cast<std::int64_t>(d);
+  }
   int integer(const json& j, const char* key, std::optional<int> def = std::nullopt) const {
-    const double v = number(j, key, def ? std::optional<double>(*def) : std::nullopt);
-    if (v != std::floor(v) || std::abs(v) > 1e9) throw Error(ctx + ": '" + key + "' must be an integer");
-    return static_cast<int>(v);
+    return int(integer_in(j, key, -1'000'000'000, 1'000'000'000, def));
   }
   bool boolean(const json& j, const char* key, bool def) const {
     if (!j.contains(key)) return def;
-    if (!j.at(key).is_boolean()) throw Error(ctx + ": '" + key + "' must be true or false");
+    if (!j.at(key).is_boolean()) expected(key, "true or false", j.at(key));
     return j.at(key).get<bool>();
   }
   std::string string(const json& j, const char* key, std::optional<std::string> def = std::nullopt) const {
     if (!j.contains(key)) {
       if (def) return *def;
-      throw Error(ctx + ": missing '" + key + "'");
+      throw Error(ctx() + ": missing '" + key + "'");
     }
-    if (!j.at(key).is_string()) throw Error(ctx + ": '" + key + "' must be a string");
+    if (!j.at(key).is_string()) expected(key, "a string", j.at(key));
     return j.at(key).get<std::string>();
   }
   std::vector<double> numbers(const json& v, const std::string& what, std::size_t n) const {
-    if (!v.is_array() || v.size() != n)
-      throw Error(ctx + ": '" + what + "' must be an array of " + std::to_string(n) + " numbers");
+    const std::string want = "an array of " + std::to_string(n) + " finite numbers";
+    if (!v.is_array() || v.size() != n) expected(what, want, v);
     std::vector<double> out;
     for (const auto& e : v) {
-      if (!e.is_number() || !std::isfinite(e.get<double>()))
-        throw Error(ctx + ": '" + what + "' must be an array of " + std::to_string(n) + " finite numbers");
+      if (!e.is_number() || !std::isfinite(e.get<double>())) expected(what, want, v);
       out.push_back(e.get<double>());
     }
     return out;
@@ -90,7 +169,7 @@ struct Reader {
   Vec3 vec3(const json& j, const char* key, std::optional<Vec3> def = std::nullopt) const {
     if (!j.contains(key)) {
       if (def) return *def;
-      throw Error(ctx + ": missing '" + key + "'");
+      throw Error(ctx() + ": missing '" + key + "'");
     }
     const auto v = numbers(j.at(key), key, 3);
     return {v[0], v[1], v[2]};
@@ -99,8 +178,7 @@ struct Reader {
     const auto v = numbers(j.at(key), key, 3);
     std::array<std::int64_t, 3> d{};
     for (int a = 0; a < 3; ++a) {
-      if (v[a] != std::floor(v[a]) || std::abs(v[a]) > 1e12)
-        throw Error(ctx + ": '" + key + "' must hold three integers");
+      if (v[a] != std::floor(v[a]) || std::abs(v[a]) > 1e12) expected(key, "three integers", j.at(key));
       d[a] = static_cast<std::int64_t>(v[a]);
     }
     GridVolume::checked_sample_count(d);
@@ -108,12 +186,18 @@ struct Reader {
   }
 };
 
-TransferFunction transfer_function_from(const json& j, const std::string& source) {
-  const Reader r{source};
+// Every key a volume object may hold (grid, builtin, raw, mesh).
+constexpr std::array<std::string_view, 14> kVolumeKeys = {
+    "builtin", "dims", "f_m", "alpha", "radius", "seed", "file", "type", "endian",
+    "spacing", "origin", "scalars", "grid", "tets_per_cell"};
+
+TransferFunction transfer_function_from(const json& j, const Reader& r, bool may_name_file) {
   r.object(j);
+  if (may_name_file) r.known(j, {"points", "opacity_points", "unit_distance", "file"});
+  else r.known(j, {"points", "opacity_points", "unit_distance"});
   auto rows = [&](const char* key) {
     const json& a = j.at(key);
-    if (!a.is_array() || a.empty()) throw Error(source + ": '" + std::string(key) + "' must be a non-empty array");
+    if (!a.is_array() || a.empty()) r.expected(key, "a non-empty array", a);
     std::vector<std::vector<double>> out;
     for (std::size_t i = 0; i < a.size(); ++i)
       out.push_back(r.numbers(a[i], std::string(key) + "[" + std::to_string(i) + "]", 5));
@@ -132,15 +216,15 @@ TransferFunction transfer_function_from(const json& j, const std::string& source
     }
   } catch (const Error& e) {
     const std::string msg = e.what();
-    if (msg.rfind(source, 0) == 0) throw;
-    throw Error(source + ": " + msg);
+    if (msg.rfind(r.file, 0) == 0) throw;
+    throw Error(r.ctx() + ": " + msg);
   }
-  throw Error(source + ": needs 'points' or 'opacity_points'");
+  throw Error(r.ctx() + ": needs 'points' or 'opacity_points'");
 }
 
-GridVolume grid_volume_from(const json& j, const fs::path& base, const std::string& source) {
-  const Reader r{source};
+GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r) {
   r.object(j);
+  r.known(j, kVolumeKeys);
   std::optional<GridVolume> vol;
   if (j.contains("builtin")) {
     const std::string name = r.string(j, "builtin");
@@ -154,11 +238,10 @@ GridVolume grid_volume_from(const json& j, const fs::path& base, const std::stri
     else if (name == "sphere")
       vol.emplace(sphere_distance(dims_or({64, 64, 64}), r.number(j, "radius", 0.0)));
     else if (name == "random") {
-      const double seed = r.number(j, "seed", 1.0);
-      if (seed < 0 || seed != std::floor(seed)) throw Error(r.ctx + ": 'seed' must be a non-negative integer");
+      const auto seed = r.integer_in(j, "seed", 0, std::int64_t(1) << 53, 1);  // exact in JSON's doubles
       vol.emplace(random_field(dims_or({32, 32, 32}), static_cast<std::uint64_t>(seed)));
     } else
-      throw Error(r.ctx + ": unknown builtin '" + name + "' (known: marschner_lobb, sphere, random, tetrahedralized)");
+      r.expected("builtin", "marschner_lobb, sphere, random or tetrahedralized", j.at("builtin"));
   } else {
     fs::path file = r.string(j, "file");
     if (file.is_relative()) file = base / file;
@@ -168,18 +251,18 @@ GridVolume grid_volume_from(const json& j, const fs::path& base, const std::stri
     } else if (ext == ".dat") {
       vol.emplace(read_volvis_dat(file));
     } else {
-      if (!j.contains("dims")) throw Error(r.ctx + ": a raw file needs 'dims'");
+      if (!j.contains("dims")) throw Error(r.ctx() + ": a raw file needs 'dims'");
       const auto dims = r.dims(j, "dims");
       const ScalarType type = parse_scalar_type(r.string(j, "type", "uint8"));
       const std::string endian = r.string(j, "endian", "little");
-      if (endian != "little" && endian != "big") throw Error(r.ctx + ": 'endian' must be little or big");
+      if (endian != "little" && endian != "big") r.expected("endian", "little or big", j.at("endian"));
       vol.emplace(read_raw_volume(file, dims, type, endian == "big" ? Endian::Big : Endian::Little));
     }
   }
   // Keys in the scene override the file's own header (SPEC §8).
   if (j.contains("spacing")) {
     const Vec3 s = r.vec3(j, "spacing");
-    if (!(s.x > 0 && s.y > 0 && s.z > 0)) throw Error(r.ctx + ": 'spacing' must be positive");
+    if (!(s.x > 0 && s.y > 0 && s.z > 0)) r.expected("spacing", "three positive numbers", j.at("spacing"));
     vol->set_spacing(s);
   }
   if (j.contains("origin")) vol->set_origin(r.vec3(j, "origin"));
@@ -188,106 +271,137 @@ GridVolume grid_volume_from(const json& j, const fs::path& base, const std::stri
 
 // A mesh file (.vtk, .vtu) or {"builtin": "tetrahedralized", "grid": {...},
 // "tets_per_cell": 5|6}; anything else is a grid.
-Volume volume_from(const json& j, const fs::path& base, const std::string& source) {
-  const Reader r{source + ": volume"};
+Volume volume_from(const json& j, const fs::path& base, const Reader& top) {
+  const Reader r = top.child("volume");
   r.object(j);
+  r.known(j, kVolumeKeys);
   const bool tetrahedralized = j.contains("builtin") && r.string(j, "builtin") == "tetrahedralized";
   fs::path file = j.contains("file") && !j.contains("builtin") ? fs::path(r.string(j, "file")) : fs::path();
   const std::string ext = file.extension().string();
-  if (!tetrahedralized && ext != ".vtk" && ext != ".vtu") return grid_volume_from(j, base, r.ctx);
+  if (!tetrahedralized && ext != ".vtk" && ext != ".vtu") return grid_volume_from(j, base, r);
   for (const char* key : {"spacing", "origin", "dims"})
-    if (j.contains(key)) throw Error(r.ctx + ": '" + key + "' applies to grid volumes, not to meshes");
+    if (j.contains(key)) throw Error(r.where(key) + ": applies to grid volumes, not to meshes");
   if (tetrahedralized) {
-    if (!j.contains("grid")) throw Error(r.ctx + ": 'tetrahedralized' needs a 'grid' volume to split");
-    const Reader g{r.ctx + ": grid"};
-    return tetrahedralize(grid_volume_from(g.object(j.at("grid")), base, g.ctx), r.integer(j, "tets_per_cell", 5));
+    if (!j.contains("grid")) throw Error(r.ctx() + ": 'tetrahedralized' needs a 'grid' volume to split");
+    const Reader g = r.child("grid");
+    return tetrahedralize(grid_volume_from(g.object(j.at("grid")), base, g), r.integer(j, "tets_per_cell", 5));
   }
   if (file.is_relative()) file = base / file;
   const std::string scalars = r.string(j, "scalars", "");
   try {
     return ext == ".vtk" ? read_vtk_legacy(file, scalars) : read_vtu(file, scalars);
   } catch (const Error& e) {
-    throw Error(r.ctx + ": " + e.what());
+    throw Error(r.ctx() + ": " + e.what());
   }
 }
 
-CameraSpec camera_from(const json& j, const std::string& source) {
-  const Reader r{source + ": camera"};
+CameraSpec camera_from(const json& j, const Reader& top) {
+  const Reader r = top.child("camera");
   r.object(j);
+  r.known(j, {"eye", "target", "up", "fov_y", "width", "height", "projection", "ortho_height"});
   CameraSpec c;
   c.eye = r.vec3(j, "eye");
   c.target = r.vec3(j, "target");
   c.up = r.vec3(j, "up", Vec3{0, 1, 0});
   c.fov_y = r.number(j, "fov_y", 30.0);
+  for (const char* key : {"width", "height"})
+    if (j.contains(key) && r.integer(j, key) <= 0)
+      r.expected(key, "a positive integer", j.at(key));
   c.width = r.integer(j, "width", 512);
   c.height = r.integer(j, "height", 512);
   const std::string proj = r.string(j, "projection", "perspective");
   if (proj == "perspective") c.projection = Projection::Perspective;
   else if (proj == "orthographic") c.projection = Projection::Orthographic;
-  else throw Error(r.ctx + ": 'projection' must be perspective or orthographic");
+  else r.expected("projection", "perspective or orthographic", j.at("projection"));
   if (c.projection == Projection::Orthographic) c.ortho_height = r.number(j, "ortho_height");
   Camera check(c);  // validates now, so a bad camera fails before any volume work
   return c;
 }
 
+// A step, tolerance or size: finite and > 0 (issue 17: `inf` read out of bounds).
+double positive(const Reader& r, const json& j, const char* key, double def) {
+  const double v = r.number(j, key, def);
+  if (!(v > 0)) r.expected(key, "a number > 0", j.at(key));
+  return v;
+}
+
+MethodSpec method_from(const json& mj, const Reader& top) {
+  const Reader m = top.child("method");
+  m.object(mj);
+  m.known(mj, {"name", "step", "tolerance", "table_size", "length_samples", "planes", "iterations", "h0", "hmin",
+               "hmax", "strategy", "builder", "termination", "skip_empty", "float_math", "max_samples", "max_work"});
+  MethodSpec method;
+  method.name = m.string(mj, "name", "exact");
+  method.step = positive(m, mj, "step", method.step);
+  method.tolerance = positive(m, mj, "tolerance", method.tolerance);
+  method.table_size = m.integer(mj, "table_size", method.table_size);
+  method.table_size_given = mj.contains("table_size");
+  method.length_samples = m.integer(mj, "length_samples", method.length_samples);
+  method.planes = m.integer(mj, "planes", method.planes);
+  method.iterations = int(m.integer_in(mj, "iterations", 1, kMaxSecondOrderIterations, method.iterations));
+  method.h0 = positive(m, mj, "h0", method.h0);
+  method.hmin = positive(m, mj, "hmin", method.hmin);
+  method.hmax = positive(m, mj, "hmax", method.hmax);
+  method.strategy = m.string(mj, "strategy", method.strategy);
+  method.builder = m.string(mj, "builder", method.builder);
+  // preint2* take a second-order builder; anything else would fall back silently.
+  const bool second_order = method.name.rfind("preint2", 0) == 0;
+  const auto& first = known_builder_names();
+  if (mj.contains("builder") && second_order && method.builder != "plain" && method.builder != "fast")
+    m.expected("builder", "plain or fast for " + method.name, mj.at("builder"));
+  if (mj.contains("builder") && method.builder != "plain" && method.builder != "fast" &&
+      std::find(first.begin(), first.end(), method.builder) == first.end()) {
+    std::string list;
+    for (const auto& n : first) list += n + ", ";
+    m.expected("builder", list + "plain or fast", mj.at("builder"));
+  }
+  method.fast.termination = m.number(mj, "termination", method.fast.termination);
+  method.fast.skip_empty = m.boolean(mj, "skip_empty", method.fast.skip_empty);
+  method.fast.float_math = m.boolean(mj, "float_math", method.fast.float_math);
+  method.max_samples = double(m.integer_in(mj, "max_samples", 1, std::int64_t(1) << 53, std::int64_t(method.max_samples)));
+  method.max_work = double(m.integer_in(mj, "max_work", 1, std::int64_t(1) << 53, std::int64_t(method.max_work)));
+  return method;
+}
+
+Lighting lighting_from(const json& lj, const Reader& top) {
+  const Reader l = top.child("lighting");
+  l.object(lj);
+  l.known(lj, {"enabled", "ambient", "diffuse", "specular", "shininess", "mode"});
+  Lighting lighting;
+  lighting.enabled = l.boolean(lj, "enabled", false);
+  lighting.ambient = l.number(lj, "ambient", lighting.ambient);
+  lighting.diffuse = l.number(lj, "diffuse", lighting.diffuse);
+  lighting.specular = l.number(lj, "specular", lighting.specular);
+  lighting.shininess = l.number(lj, "shininess", lighting.shininess);
+  lighting.mode = l.string(lj, "mode", lighting.mode);
+  if (lighting.mode != "sampled" && lighting.mode != "interpolated")
+    l.expected("mode", "sampled or interpolated", lj.at("mode"));
+  for (const char* key : {"ambient", "diffuse", "specular", "shininess"})
+    if (lj.contains(key) && lj.at(key).get<double>() < 0) l.expected(key, "a number >= 0", lj.at(key));
+  return lighting;
+}
+
 }  // namespace
 
 TransferFunction parse_transfer_function(std::string_view text, const std::string& source) {
-  return transfer_function_from(parse_json(text, source), source);
+  return transfer_function_from(parse_json(text, source), Reader{source, ""}, false);
 }
 
 TransferFunction load_transfer_function(const fs::path& path) {
-  return parse_transfer_function(text_of(path), "transfer function '" + path.string() + "'");
+  return parse_transfer_function(text_of(path), "transfer function '" + printable(path.string()) + "'");
 }
 
 Scene parse_scene(std::string_view text, const fs::path& base, const std::string& source) {
   const json j = parse_json(text, source);
-  const Reader r{source};
+  const Reader r{source, ""};
   r.object(j);
+  r.known(j, {"volume", "transfer_function", "camera", "method", "lighting", "background"});
   for (const char* key : {"volume", "transfer_function", "camera"})
     if (!j.contains(key)) throw Error(source + ": missing '" + std::string(key) + "'");
 
-  const CameraSpec camera = camera_from(j.at("camera"), source);
-
-  MethodSpec method;
-  if (j.contains("method")) {
-    const Reader m{source + ": method"};
-    const json& mj = m.object(j.at("method"));
-    method.name = m.string(mj, "name", "exact");
-    method.step = m.number(mj, "step", method.step);
-    method.tolerance = m.number(mj, "tolerance", method.tolerance);
-    method.table_size = m.integer(mj, "table_size", method.table_size);
-    method.table_size_given = mj.contains("table_size");
-    method.length_samples = m.integer(mj, "length_samples", method.length_samples);
-    method.planes = m.integer(mj, "planes", method.planes);
-    method.iterations = m.integer(mj, "iterations", method.iterations);
-    if (method.iterations < 1 || method.iterations > kMaxSecondOrderIterations)
-      throw Error(m.ctx + ": 'iterations' must be in [1, " + std::to_string(kMaxSecondOrderIterations) + "]");
-    method.h0 = m.number(mj, "h0", method.h0);
-    method.hmin = m.number(mj, "hmin", method.hmin);
-    method.hmax = m.number(mj, "hmax", method.hmax);
-    method.strategy = m.string(mj, "strategy", method.strategy);
-    method.builder = m.string(mj, "builder", method.builder);
-    method.fast.termination = m.number(mj, "termination", method.fast.termination);
-    method.fast.skip_empty = m.boolean(mj, "skip_empty", method.fast.skip_empty);
-    method.fast.float_math = m.boolean(mj, "float_math", method.fast.float_math);
-  }
-
-  Lighting lighting;
-  if (j.contains("lighting")) {
-    const Reader l{source + ": lighting"};
-    const json& lj = l.object(j.at("lighting"));
-    lighting.enabled = l.boolean(lj, "enabled", false);
-    lighting.ambient = l.number(lj, "ambient", lighting.ambient);
-    lighting.diffuse = l.number(lj, "diffuse", lighting.diffuse);
-    lighting.specular = l.number(lj, "specular", lighting.specular);
-    lighting.shininess = l.number(lj, "shininess", lighting.shininess);
-    lighting.mode = l.string(lj, "mode", lighting.mode);
-    if (lighting.mode != "sampled" && lighting.mode != "interpolated")
-      throw Error(l.ctx + ": 'mode' must be sampled or interpolated");
-    for (double v : {lighting.ambient, lighting.diffuse, lighting.specular, lighting.shininess})
-      if (v < 0) throw Error(l.ctx + ": coefficients and shininess must be >= 0");
-  }
+  const CameraSpec camera = camera_from(j.at("camera"), r);
+  const MethodSpec method = j.contains("method") ? method_from(j.at("method"), r) : MethodSpec{};
+  const Lighting lighting = j.contains("lighting") ? lighting_from(j.at("lighting"), r) : Lighting{};
 
   Vec3 background{0, 0, 0};
   if (j.contains("background")) {
@@ -296,21 +410,23 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
   }
 
   const json& tfj = j.at("transfer_function");
+  const Reader t = r.child("transfer_function");
   std::optional<TransferFunction> tf;
   if (tfj.is_object() && tfj.contains("file")) {
-    fs::path file = Reader{source + ": transfer_function"}.string(tfj, "file");
+    t.known(tfj, {"file"});
+    fs::path file = t.string(tfj, "file");
     if (file.is_relative()) file = base / file;
     tf.emplace(load_transfer_function(file));
   } else {
-    tf.emplace(transfer_function_from(tfj, source + ": transfer_function"));
+    tf.emplace(transfer_function_from(tfj, t, true));
   }
 
-  Volume volume = volume_from(j.at("volume"), base, source);
+  Volume volume = volume_from(j.at("volume"), base, r);
   return Scene{std::move(volume), std::move(*tf), camera, lighting, background, method};
 }
 
 Scene load_scene(const fs::path& path) {
-  const std::string source = "scene '" + path.string() + "'";
+  const std::string source = "scene '" + printable(path.string()) + "'";
   return parse_scene(text_of(path), path.has_parent_path() ? path.parent_path() : fs::path("."), source);
 }
 

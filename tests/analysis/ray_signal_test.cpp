@@ -22,6 +22,20 @@ TEST(RaySignal, LinearSignal) {
   EXPECT_NEAR(sig.xi(2), 0, 1e-9);
 }
 
+TEST(RaySignal, StepsLongerThanTheRayOrNotFinite) {
+  // issue 17: an infinite step left one sample and read past the end; a
+  // step longer than the ray gives one interval, the linear signal exactly.
+  const auto vol = test::volume_from({9, 3, 3}, [](double x, double, double) { return 2 * x; });
+  const Ray ray{{-1, 1, 1}, {1, 0, 0}};
+  EXPECT_THROW(RaySignal(vol, ray, INFINITY), Error);
+  EXPECT_THROW(RaySignal(vol, ray, NAN), Error);
+  EXPECT_THROW(RaySignal(vol, ray, 1e-300), Error);  // too many samples, refused before the cast
+  const RaySignal sig(vol, ray, 1e300);
+  EXPECT_EQ(sig.sample_t().size(), 2u);
+  EXPECT_NEAR(sig.approximation(2, 4.0), 6.0, 1e-9);  // x = 3
+  EXPECT_NEAR(sig.xi(1), 0, 1e-9);
+}
+
 TEST(RaySignal, QuadraticSignalIsExactAtSecondOrder) {
   // f = x y is reproduced exactly by trilinear interpolation; along the
   // diagonal x = y = u the signal is u^2 = t^2 / 2 (t = sqrt 2 u).

@@ -7,40 +7,16 @@
 #include <fstream>
 #include <sstream>
 
-#include "test_support.hpp"
+#include "cli_support.hpp"
 #include "vri/io/npy.hpp"
 
 namespace vri {
 namespace {
 
-struct ProcessResult {
-  int code;
-  std::string out, err;
-};
-
-ProcessResult run(const std::string& args, const test::TempDir& dir) {
-  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = std::string(VRI_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(cmd.c_str());
-  auto slurp = [](const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-}
-
-std::string scene_with(const test::TempDir& dir, const std::string& body) {
-  const auto p = dir / "scene.json";
-  test::write_text(p, body);
-  return p.string();
-}
-
-const std::string kGood = R"({"volume": {"builtin": "sphere", "dims": [12, 12, 12]},
-  "transfer_function": {"points": [[-6, 1, 0.5, 0, 0.5], [0, 0, 0, 1, 0]]},
-  "camera": {"eye": [5.5, 5.5, 40], "target": [5.5, 5.5, 5.5], "width": 16, "height": 12},
-  "method": {"name": "exact", "tolerance": 1e-5}})";
+using test::ProcessResult;
+using test::run;
+using test::scene_with;
+const std::string& kGood = test::kGoodScene;
 
 TEST(Cli, RendersComparesAndOverrides) {
   test::TempDir dir;
@@ -67,7 +43,7 @@ TEST(Cli, RendersComparesAndOverrides) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("a        0.000000"), std::string::npos) << r.out;
   r = run("compare " + a.string() + " " + b.string() + " --tolerance 0", dir);
-  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(r.code, 1) << "pixels over the tolerance: exit 1 (SPEC 11) " << r.err;
   EXPECT_EQ(r.out.find("a        0.000000"), std::string::npos) << "riemann differs from exact: " << r.out;
 }
 

@@ -54,7 +54,7 @@ TEST(MeshScene, RefusesMismatchedMethodsAndKeys) {
   expect_refused([&] { make_integrator(grid.method, grid.grid(), grid.transfer_function); },
                  "method 'tet-raycast' needs a tetrahedral mesh");
   expect_refused([] { scene(R"({"file": "../data/tetra_mesh_small_ascii.vtk", "spacing": [1, 1, 1]})"); },
-                 "'spacing' applies to grid volumes, not to meshes");
+                 "volume.spacing: applies to grid volumes, not to meshes");
   expect_refused([] { scene(R"({"file": "../data/tetra_mesh_small_ascii.vtk", "scalars": "rho"})"); },
                  "volume: mesh '");
   expect_refused([] { scene(R"({"builtin": "tetrahedralized"})"); }, "needs a 'grid'");

@@ -17,8 +17,7 @@ TEST(SceneLoader, ReadsEveryKeyWithDefaults) {
     "transfer_function": {"opacity_points": [[0, 1, 0, 0, 0.5], [1, 0, 0, 1, 0.5]], "unit_distance": 2},
     "camera": {"eye": [0, 0, 10], "target": [0, 0, 0], "fov_y": 45, "width": 30, "height": 20},
     "background": [0.1, 0.2, 0.3],
-    "method": {"name": "riemann", "step": 0.25, "tolerance": 1e-3, "table_size": 128},
-    "extra_key_for_the_future": 1})",
+    "method": {"name": "riemann", "step": 0.25, "tolerance": 1e-3, "table_size": 128}})",
                               ".");
   EXPECT_EQ(s.grid().dims(), (std::array<int, 3>{9, 9, 9}));
   EXPECT_DOUBLE_EQ(s.grid().spacing().x, 0.5);
@@ -65,11 +64,15 @@ TEST(SceneLoader, RefusesBadScenesWithOneClearLine) {
   const std::string tf = R"("transfer_function": {"points": [[0, 1, 1, 1, 0.1]]})";
   const std::string vol = R"("volume": {"builtin": "sphere", "dims": [8, 8, 8]})";
   expect_refused("{ not json", "malformed JSON");
-  expect_refused("[1, 2]", "must be a JSON object");
+  // issue 17: a typo is no longer ignored; the nearest key is suggested
+  expect_refused("{" + vol + ", " + kCamera + R"(, "trasnfer_function": {}})",
+                 "scene: trasnfer_function: unknown key (did you mean 'transfer_function'?)");
+  expect_refused("{" + vol + ", " + tf + ", " + kCamera + R"(, "extra_key_for_the_future": 1})", "unknown key (known: ");
+  expect_refused("[1, 2]", "scene: expected a JSON object, found [1,2]");
   expect_refused("{" + tf + ", " + kCamera + "}", "missing 'volume'");
   expect_refused("{" + vol + ", " + kCamera + R"(, "transfer_function": {"points": [[5, 1, 1, 1, 0.1], [1, 1, 1, 1, 0.1]]}})", "sorted");
   expect_refused("{" + vol + ", " + kCamera + R"(, "transfer_function": {"points": [[5, 1, 1, 1, -0.1]]}})", "tau");
-  expect_refused("{" + vol + ", " + kCamera + R"(, "transfer_function": {"points": [[5, 1, 1]]}})", "5 numbers");
+  expect_refused("{" + vol + ", " + kCamera + R"(, "transfer_function": {"points": [[5, 1, 1]]}})", "transfer_function.points[0]: expected an array of 5 finite numbers, found [5,1,1]");
   expect_refused("{" + vol + ", " + kCamera +
                      R"(, "transfer_function": {"opacity_points": [[5, 1, 1, 1, 1.0]], "unit_distance": 1}})",
                  "opacity");
@@ -81,7 +84,7 @@ TEST(SceneLoader, RefusesBadScenesWithOneClearLine) {
                  "ortho_height");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "sphere", "dims": [8, 0, 8]}})", "at least 2");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "sphere", "dims": [100000, 100000, 100000]}})", "exceeds the limit");
-  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "teapot"}})", "unknown builtin");
+  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "teapot"}})", "volume.builtin: expected marschner_lobb, sphere, random or tetrahedralized, found \"teapot\"");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "../data/bucky_32x32x32_uint8.raw", "dims": [32, 32, 31]}})",
                  "bytes");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "../data/bucky_32x32x32_uint8.raw", "dims": [32, 32, 32], "type": "complex"}})",
@@ -97,9 +100,9 @@ TEST(SceneLoader, ReadsAndChecksIterations) {
   const Scene s = parse_scene(head + R"(, "method": {"name": "preint2", "iterations": 16}})", ".");
   EXPECT_EQ(s.method.iterations, 16);
   EXPECT_FALSE(s.method.table_size_given);
-  expect_refused(head + R"(, "method": {"iterations": 0}})", "'iterations' must be in [1, 4096]");
-  expect_refused(head + R"(, "method": {"iterations": 4097}})", "'iterations' must be in [1, 4096]");
-  expect_refused(head + R"(, "method": {"iterations": 2.5}})", "'iterations' must be an integer");
+  expect_refused(head + R"(, "method": {"iterations": 0}})", "method.iterations: expected an integer in [1, 4096], found 0");
+  expect_refused(head + R"(, "method": {"iterations": 4097}})", "found 4097");
+  expect_refused(head + R"(, "method": {"iterations": 2.5}})", "method.iterations: expected an integer in [1, 4096], found 2.5");
   expect_refused(head + R"(, "method": {"iterations": "many"}})", "iterations");
 }
 

@@ -27,6 +27,9 @@ struct MethodSpec {
   // no pixel) and early ray termination (`termination`, a transmittance
   // threshold; default 0, off). fast_path.hpp.
   FastPath fast{};
+  // Caps checked before rendering (issue 17): samples along one ray and
+  // samples in all (per ray x pixels); raised by max_samples / max_work.
+  double max_samples = 1e7, max_work = 2e10;
 };
 
 }  // namespace vri

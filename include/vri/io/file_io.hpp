@@ -18,8 +18,9 @@ std::uint64_t checked_file_size(const std::filesystem::path& path);
 // storage: no file-sized copy beside it); throws vri::Error if it cannot.
 void read_file_range(const std::filesystem::path& path, std::uint64_t offset, std::span<std::byte> out);
 
-// Writes to a temporary file beside `path`, then renames it into place, so a
-// failure never leaves a truncated output. Throws vri::Error on failure.
+// Writes to a temporary file created exclusively beside `path`, then renames
+// it into place, so a failure never leaves a truncated output. Inside an
+// OutputTransaction the rename waits for its commit(). Throws vri::Error.
 void write_file_atomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
 
 }  // namespace vri

@@ -1,0 +1,129 @@
+#include "render_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
+
+namespace vri::cli {
+
+namespace {
+
+std::string g(double v) { return format_g(v); }
+
+// The step a method takes along a ray, in voxel units; 1 for methods that
+// step cell by cell (exact, preint2-dual) or that are not stepped at all.
+double step_of(const MethodSpec& m, const char** key) {
+  if (m.name == "riemann" || m.name == "preint1" || m.name == "preint2") {
+    *key = "step";
+    return m.step;
+  }
+  if (m.name == "adaptive") {
+    *key = "hmin";
+    return m.hmin;
+  }
+  *key = nullptr;
+  return 1.0;
+}
+
+struct Bounds {
+  Vec3 lo, hi;
+  double voxel_unit;
+  double s_min, s_max;
+};
+
+Bounds bounds_of(const Scene& scene) {
+  return std::visit(
+      [](const auto& v) {
+        using V = std::decay_t<decltype(v)>;
+        double unit = 1.0;
+        if constexpr (std::is_same_v<V, GridVolume>) unit = v.voxel_unit();
+        else unit = v.mean_edge_length();
+        return Bounds{v.box_lo(), v.box_hi(), unit, double(v.min_value()), double(v.max_value())};
+      },
+      scene.volume);
+}
+
+}  // namespace
+
+int checked_threads(int threads) {
+  if (threads < 0 || threads > kMaxThreads)
+    throw Error("--threads: expected an integer in [0, " + std::to_string(kMaxThreads) + "] (0: all cores), found " +
+                std::to_string(threads));
+  return threads;
+}
+
+void check_method_parameters(const MethodSpec& m) {
+  const std::pair<const char*, double> values[] = {
+      {"step", m.step}, {"tolerance", m.tolerance}, {"h0", m.h0}, {"hmin", m.hmin}, {"hmax", m.hmax}};
+  for (const auto& [key, v] : values)
+    if (!(v > 0) || !std::isfinite(v))
+      throw Error(std::string("--") + key + " (scene method." + key + "): expected a finite number > 0, found " + g(v));
+  if (!std::isfinite(m.fast.termination))
+    throw Error("--termination (scene method.termination): expected a finite number, found " + g(m.fast.termination));
+  if (!(m.max_samples >= 1) || !(m.max_work >= 1))
+    throw Error("--max-samples and --max-work: expected numbers >= 1");
+}
+
+void check_work(const Scene& scene, const Camera& camera) {
+  const MethodSpec& m = scene.method;
+  const Bounds b = bounds_of(scene);
+  const char* key = nullptr;
+  const double h = step_of(m, &key) * b.voxel_unit;
+  const double diagonal = length(b.hi - b.lo);
+  const double per_ray = std::ceil(diagonal / h) + 1;
+  const double pixels = double(camera.width()) * camera.height();
+  const std::string by = key ? std::string(" with method.") + key + " " + g(step_of(m, &key)) : std::string();
+  if (per_ray > m.max_samples)
+    throw Error("'" + m.name + "'" + by + " takes about " + g(per_ray) + " samples per ray (volume diagonal " +
+                g(diagonal) + ", voxel unit " + g(b.voxel_unit) + "), over the cap of " + g(m.max_samples) +
+                "; raise it with --max-samples N (scene method.max_samples) or use a larger step");
+  if (per_ray * pixels > m.max_work)
+    throw Error("'" + m.name + "'" + by + " takes about " + g(per_ray * pixels) + " samples in all (" + g(per_ray) +
+                " per ray x " + g(pixels) + " pixels), over the cap of " + g(m.max_work) +
+                "; raise it with --max-work N (scene method.max_work), or use a larger step or a smaller image");
+}
+
+void refuse_non_finite(const Image& image, const std::string& what) {
+  const auto& d = image.data();
+  const auto bad = std::find_if(d.begin(), d.end(), [](float v) { return !std::isfinite(v); });
+  if (bad == d.end()) return;
+  const std::size_t i = std::size_t(bad - d.begin()), pixel = i / 4;
+  const auto count = std::count_if(d.begin(), d.end(), [](float v) { return !std::isfinite(v); });
+  static const char* channel[] = {"r", "g", "b", "a"};
+  throw Error(what + " holds " + std::to_string(count) + " non-finite values (first " + g(*bad) + " at pixel (" +
+              std::to_string(pixel % std::size_t(image.width())) + ", " +
+              std::to_string(pixel / std::size_t(image.width())) + ") channel " + channel[i % 4] +
+              "); nothing was written");
+}
+
+bool warn_if_transparent(const Image& image, const Scene& scene, const Camera& camera) {
+  const auto& d = image.data();
+  for (std::size_t i = 3; i < d.size(); i += 4)
+    if (d[i] != 0) return false;
+  const Bounds b = bounds_of(scene);
+  // The transfer function is piecewise linear: its largest extinction over
+  // the data range lies at an end or at a breakpoint inside.
+  const TransferFunction& tf = scene.transfer_function;
+  double tau = std::max(tf(b.s_min).tau, tf(b.s_max).tau);
+  for (const ControlPoint& p : tf.points())
+    if (p.s >= b.s_min && p.s <= b.s_max) tau = std::max(tau, p.tau);
+  bool hits = false;
+  for (int y = 0; y < camera.height() && !hits; ++y)
+    for (int x = 0; x < camera.width() && !hits; ++x) hits = clip_to_box(camera.ray(x, y), b.lo, b.hi).has_value();
+  std::string cause;
+  if (!hits)
+    cause = "the camera looks away from the volume (no ray meets its box " + g(b.lo.x) + "," + g(b.lo.y) + "," +
+            g(b.lo.z) + " .. " + g(b.hi.x) + "," + g(b.hi.y) + "," + g(b.hi.z) + ")";
+  else if (tau == 0)
+    cause = "the transfer function is transparent over the data range [" + g(b.s_min) + ", " + g(b.s_max) +
+            "] (its control points span [" + g(tf.s_lo()) + ", " + g(tf.s_hi()) + "])";
+  else
+    cause = "the rays cross only data the transfer function makes transparent";
+  std::cerr << "vri: warning: every pixel is transparent: " << cause << "\n";
+  return true;
+}
+
+}  // namespace vri::cli

@@ -1,0 +1,34 @@
+#pragma once
+// Checks `vri render` makes around the render itself (issue 17): parameters
+// that would crash or hang it, work caps estimated before it, outputs that
+// must not be written (NaN/Inf) and images worth a warning (all transparent).
+#include <string>
+
+#include "vri/camera/camera.hpp"
+#include "vri/render/image.hpp"
+#include "vri/scene/scene.hpp"
+
+namespace vri::cli {
+
+// Most worker threads accepted (TBB crashes on absurd counts).
+inline constexpr int kMaxThreads = 1024;
+
+// --threads in [0, kMaxThreads]; vri::Error beyond.
+int checked_threads(int threads);
+
+// Steps, tolerances and sizes of the method: finite and > 0, each error
+// naming the flag and the scene key.
+void check_method_parameters(const MethodSpec& method);
+
+// Samples per ray and in all, estimated from the step and the volume's
+// diagonal; vri::Error saying how to raise the cap when over it.
+void check_work(const Scene& scene, const Camera& camera);
+
+// vri::Error if the image holds a NaN or an infinity (no file is written).
+void refuse_non_finite(const Image& image, const std::string& what);
+
+// A one-line warning on stderr naming the likely cause when every pixel is
+// transparent; true if it warned.
+bool warn_if_transparent(const Image& image, const Scene& scene, const Camera& camera);
+
+}  // namespace vri::cli

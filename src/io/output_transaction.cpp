@@ -1,0 +1,154 @@
+#include "vri/io/output_transaction.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <string>
+
+#include "vri/core/error.hpp"
+
+namespace vri {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Temporaries a signal handler may unlink: fixed slots, so the handler needs
+// no allocation or lock (only async-signal-safe calls, POSIX.1-2008 §2.4.3).
+constexpr int kSlots = 64;
+constexpr std::size_t kPathMax = 4096;
+struct Slot {
+  std::atomic<bool> used{false};
+  char path[kPathMax];
+};
+Slot g_slots[kSlots];
+std::atomic<OutputTransaction*> g_active{nullptr};
+
+int register_temp(const std::string& path) {
+  if (path.size() >= kPathMax) return -1;
+  for (int i = 0; i < kSlots; ++i) {
+    if (g_slots[i].used.load(std::memory_order_acquire)) continue;
+    std::memcpy(g_slots[i].path, path.c_str(), path.size() + 1);
+    g_slots[i].used.store(true, std::memory_order_release);
+    return i;
+  }
+  return -1;
+}
+
+void unregister_temp(const fs::path& path) {
+  for (Slot& s : g_slots)
+    if (s.used.load(std::memory_order_acquire) && path.string() == s.path)
+      s.used.store(false, std::memory_order_release);
+}
+
+extern "C" void unlink_temporaries_and_reraise(int sig) {
+  for (Slot& s : g_slots)
+    if (s.used.load(std::memory_order_acquire)) ::unlink(s.path);
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+// Signals that would kill the process between creating a temporary and
+// registering it are held back for that moment.
+class BlockTermination {
+ public:
+  BlockTermination() {
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &set, &old_);
+  }
+  ~BlockTermination() { pthread_sigmask(SIG_SETMASK, &old_, nullptr); }
+
+ private:
+  sigset_t old_;
+};
+
+[[noreturn]] void fail(const fs::path& target, const std::string& why) {
+  throw Error("cannot write '" + target.string() + "': " + why);
+}
+
+}  // namespace
+
+OutputTransaction::OutputTransaction() : previous_(g_active.exchange(this)) {}
+
+OutputTransaction::~OutputTransaction() {
+  discard();
+  g_active.store(previous_);
+}
+
+OutputTransaction* OutputTransaction::active() { return g_active.load(); }
+
+void OutputTransaction::stage(const fs::path& target, std::span<const std::byte> bytes) {
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) fail(target, "directory '" + dir.string() + "' does not exist");
+  if (target.filename().empty() || fs::is_directory(target, ec)) fail(target, "is a directory");
+  // O_EXCL: a name that exists already (a planted link included) is never
+  // opened; another name is tried instead.
+  fs::path temp;
+  int fd = -1;
+  {
+    const BlockTermination hold;
+    for (int k = 0; k < 100 && fd < 0; ++k) {
+      temp = dir / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()) + "." + std::to_string(k));
+      fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+      if (fd < 0 && errno != EEXIST) fail(target, std::strerror(errno));
+    }
+    if (fd < 0) fail(target, "no free temporary name beside it");
+    if (register_temp(temp.string()) < 0) {
+      ::close(fd);
+      ::unlink(temp.c_str());
+      fail(target, "too many outputs");
+    }
+    staged_.push_back({temp, target});
+  }
+  const char* p = reinterpret_cast<const char*>(bytes.data());
+  std::size_t left = bytes.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string why = n < 0 ? std::strerror(errno) : "write failed";
+      ::close(fd);
+      fail(target, why);  // the destructor removes the temporary
+    }
+    p += n;
+    left -= std::size_t(n);
+  }
+  if (::close(fd) != 0) fail(target, std::strerror(errno));
+}
+
+void OutputTransaction::commit() {
+  while (!staged_.empty()) {
+    const Staged s = staged_.front();
+    // rename() replaces a link at the target; it never writes through it.
+    if (::rename(s.temp.c_str(), s.target.c_str()) != 0) fail(s.target, std::strerror(errno));
+    unregister_temp(s.temp);
+    staged_.erase(staged_.begin());
+  }
+}
+
+void OutputTransaction::discard() noexcept {
+  for (const Staged& s : staged_) {
+    ::unlink(s.temp.c_str());
+    unregister_temp(s.temp);
+  }
+  staged_.clear();
+}
+
+void remove_temporaries_on_signal() {
+  struct sigaction sa {};
+  sa.sa_handler = unlink_temporaries_and_reraise;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESETHAND;
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+}  // namespace vri

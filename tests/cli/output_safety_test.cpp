@@ -1,0 +1,157 @@
+// Issue 17, outputs: all of a command's files appear together or not at all,
+// temporaries are created exclusively (a planted link is never followed),
+// SIGTERM removes them, concurrent writers never mix, and memory limits fail
+// cleanly.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_support.hpp"
+#include "vri/io/output_transaction.hpp"
+
+extern char** environ;
+
+namespace vri {
+namespace {
+
+namespace fs = std::filesystem;
+using test::ProcessResult;
+using test::run;
+using test::scene_with;
+
+std::vector<std::string> listing(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+const std::string kAdaptive = "--method adaptive --tolerance 1e-3";
+
+TEST(OutputSafety, AFailingSecondOutputLeavesNoFirst) {  // defect 7
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, test::kGoodScene), out = (dir / "out.npy").string();
+  const std::string nowhere = (dir / "no_such_dir").string();
+  for (const std::string& args :
+       {"render " + scene + " -o " + out + " " + kAdaptive + " --error-estimate " + nowhere + "/e.npy",
+        "render " + scene + " -o " + out + " " + kAdaptive + " --trace-pixel 8 6 --trace " + nowhere + "/t.csv",
+        "ray " + scene + " --pixel 8 6 -o " + (dir / "out.csv").string() + " --plot " + nowhere + "/p.svg"}) {
+    const ProcessResult r = run(args, dir);
+    EXPECT_EQ(r.code, 1) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(listing(dir.path), (std::vector<std::string>{"scene.json", "stderr.txt", "stdout.txt"})) << args;
+  }
+}
+
+TEST(OutputSafety, ALinkAtTheTargetIsReplacedNotFollowed) {  // defect 8
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, test::kGoodScene);
+  test::write_text(dir / "victim.txt", "keep");
+  fs::create_symlink(dir / "victim.txt", dir / "out.npy");
+  ASSERT_EQ(run("render " + scene + " -o " + (dir / "out.npy").string(), dir).code, 0);
+  EXPECT_EQ(test::slurp(dir / "victim.txt"), "keep");
+  EXPECT_FALSE(fs::is_symlink(dir / "out.npy"));
+}
+
+TEST(OutputSafety, ALinkAtTheTemporaryNameIsNotFollowed) {  // defect 8
+  test::TempDir dir;
+  test::write_text(dir / "victim.txt", "keep");
+  // the first temporary name this process would use, planted as a link
+  fs::create_symlink(dir / "victim.txt", dir / (".out.bin.tmp" + std::to_string(::getpid()) + ".0"));
+  {
+    OutputTransaction outputs;
+    const std::string bytes = "new";
+    outputs.stage(dir / "out.bin", std::as_bytes(std::span(bytes)));
+    outputs.commit();
+  }
+  EXPECT_EQ(test::slurp(dir / "victim.txt"), "keep");
+  EXPECT_EQ(test::slurp(dir / "out.bin"), "new");
+}
+
+TEST(OutputSafety, AnUncommittedTransactionLeavesNothing) {
+  test::TempDir dir;
+  {
+    OutputTransaction outputs;
+    const std::string bytes = "x";
+    outputs.stage(dir / "a.bin", std::as_bytes(std::span(bytes)));
+    outputs.stage(dir / "b.bin", std::as_bytes(std::span(bytes)));
+  }
+  EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+// Waits (without a time limit of its own) until `dir` holds a temporary.
+bool temporary_appears(const fs::path& dir, pid_t pid) {
+  for (;;) {
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().filename().string().find(".tmp") != std::string::npos) return true;
+    int status;
+    if (::waitpid(pid, &status, WNOHANG) == pid) return false;  // finished first
+    ::usleep(200);
+  }
+}
+
+TEST(OutputSafety, SigtermRemovesTheTemporaries) {  // defect 7
+  test::TempDir dir;
+  // the image is staged, then the error estimate takes a while
+  const std::string scene = scene_with(
+      dir, test::kGoodScene.substr(0, test::kGoodScene.find(R"("width")")) + R"("width": 400, "height": 400},
+      "method": {"name": "adaptive", "tolerance": 1e-9, "hmin": 0.001}})");
+  const std::string out = (dir / "out.npy").string(), est = (dir / "est.npy").string();
+  std::vector<std::string> args = {VRI_BINARY, "render", scene, "-o", out, "--error-estimate", est, "--threads", "1"};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid;
+  ASSERT_EQ(::posix_spawn(&pid, VRI_BINARY, nullptr, nullptr, argv.data(), environ), 0);
+  ASSERT_TRUE(temporary_appears(dir.path, pid)) << "the render finished before a temporary was seen";
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  EXPECT_EQ(listing(dir.path), (std::vector<std::string>{"scene.json"}));
+}
+
+TEST(OutputSafety, ConcurrentWritersNeverMix) {  // item 6
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, test::kGoodScene);
+  const std::string out = (dir / "out.npy").string();
+  // two different images, each rendered alone first
+  ASSERT_EQ(run("render " + scene + " -o " + (dir / "a.npy").string() + " --width 64 --height 48", dir).code, 0);
+  ASSERT_EQ(run("render " + scene + " -o " + (dir / "b.npy").string() + " --width 64 --height 48 --method riemann",
+                dir).code, 0);
+  const std::string a = test::slurp(dir / "a.npy"), b = test::slurp(dir / "b.npy");
+  std::string cmd;
+  for (int k = 0; k < 8; ++k)
+    cmd += std::string(VRI_BINARY) + " render " + scene + " -o " + out + " --width 64 --height 48" +
+           (k % 2 ? " --method riemann" : "") + " 2>/dev/null & ";
+  cmd += "wait";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const std::string got = test::slurp(out);
+  EXPECT_TRUE(got == a || got == b) << "a mixed file of " << got.size() << " bytes";
+  for (const auto& name : listing(dir.path)) EXPECT_EQ(name.find(".tmp"), std::string::npos) << name;
+}
+
+TEST(OutputSafety, MemoryLimitsFailCleanly) {  // item 6
+  test::TempDir dir;
+  const std::string big = scene_with(
+      dir, test::kGoodScene.substr(0, test::kGoodScene.find("[12, 12, 12]")) + "[800, 800, 800]" +
+               test::kGoodScene.substr(test::kGoodScene.find("[12, 12, 12]") + 12));
+  for (const char* limit : {"100000", "300000", "1000000"}) {
+    const ProcessResult r =
+        run("render " + big + " -o " + (dir / "out.npy").string(), dir, std::string("ulimit -v ") + limit + "; ");
+    EXPECT_EQ(r.code, 1) << limit << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("vri: error: ", 0), 0u) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out.npy"));
+  }
+}
+
+}  // namespace
+}  // namespace vri

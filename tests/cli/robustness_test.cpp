@@ -1,0 +1,177 @@
+// Issue 17 at the command line: parameters that crashed or hung vri, work
+// caps, refused non-finite output, strict scene keys, `compare`'s exit
+// status, the transparent-image warning and the shape of error messages.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "cli_support.hpp"
+#include "vri/io/npy.hpp"
+
+namespace vri {
+namespace {
+
+namespace fs = std::filesystem;
+using test::ProcessResult;
+using test::run;
+using test::scene_with;
+
+// Non-zero exit, exactly one line starting "vri: error: " that holds
+// `fragment`, and none of `outputs` written.
+void expect_refused(const std::string& args, const std::string& fragment, const test::TempDir& dir,
+                    std::initializer_list<std::string> outputs = {"out.npy"}) {
+  const ProcessResult r = run(args, dir);
+  EXPECT_NE(r.code, 0) << args;
+  EXPECT_NE(r.code, -1) << "crashed: " << args;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+  EXPECT_EQ(r.err.rfind("vri: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(fragment), std::string::npos) << args << "\n" << r.err;
+  for (const auto& o : outputs) EXPECT_FALSE(fs::exists(dir / o)) << args;
+}
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const auto p = s.find(from);
+  EXPECT_NE(p, std::string::npos) << from;
+  return s.replace(p, from.size(), to);
+}
+
+TEST(CliRobustness, RayStepMustBeFinite) {  // defect 4
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, test::kGoodScene);
+  expect_refused("ray " + scene + " --pixel 8 6 --step inf -o " + (dir / "r.csv").string(), "--step", dir, {"r.csv"});
+  expect_refused("ray " + scene + " --pixel 8 6 --step nan -o " + (dir / "r.csv").string(), "--step", dir, {"r.csv"});
+  // a step longer than the ray: one interval, no out-of-bounds read
+  const ProcessResult r = run("ray " + scene + " --pixel 8 6 --step 1e300 -o " + (dir / "r.csv").string(), dir);
+  EXPECT_EQ(r.code, 0) << r.err;
+}
+
+TEST(CliRobustness, RenderParametersMustBeFiniteAndPositive) {  // defect 4, flags
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, test::kGoodScene), out = (dir / "out.npy").string();
+  for (const char* flags : {"--method riemann --step inf", "--method riemann --step nan", "--method riemann --step 0",
+                            "--method adaptive --hmin inf", "--method adaptive --h0 -1", "--method adaptive --hmax nan",
+                            "--tolerance inf", "--method riemann --termination nan"})
+    expect_refused("render " + scene + " -o " + out + " " + flags, "expected", dir);
+  // ... and in the scene, naming the key path
+  expect_refused("render " + scene_with(dir, replaced(test::kGoodScene, R"("tolerance": 1e-5)", R"("step": -2)"), "s.json") +
+                     " -o " + out,
+                 "method.step: expected a number > 0, found -2", dir);
+}
+
+TEST(CliRobustness, ThreadCountIsCapped) {  // defect 5
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, test::kGoodScene), out = (dir / "out.npy").string();
+  expect_refused("render " + scene + " -o " + out + " --threads 10000000", "--threads: expected an integer in [0, 1024]",
+                 dir);
+  EXPECT_EQ(run("render " + scene + " -o " + out + " --threads 1024", dir).code, 0);
+}
+
+TEST(CliRobustness, WorkIsCappedBeforeRendering) {  // defect 11
+  test::TempDir dir;
+  const std::string out = (dir / "out.npy").string();
+  // spacing 1e-6 on one axis: the voxel unit shrinks, 6e7 samples per ray
+  const std::string thin = scene_with(
+      dir, replaced(replaced(test::kGoodScene, R"("dims": [12, 12, 12]})", R"("dims": [12, 12, 12], "spacing": [1e-6, 1, 1]})"),
+                    R"("name": "exact", "tolerance": 1e-5)", R"("name": "riemann", "step": 1)"));
+  expect_refused("render " + thin + " -o " + out, "samples per ray", dir);
+  expect_refused("render " + thin + " -o " + out, "--max-samples", dir);
+  const std::string scene = scene_with(dir, test::kGoodScene, "good.json");
+  expect_refused("render " + scene + " -o " + out + " --max-work 1000", "raise it with --max-work", dir);
+  EXPECT_EQ(run("render " + scene + " -o " + out + " --max-work 1e6", dir).code, 0);
+}
+
+TEST(CliRobustness, NonFiniteImagesAreNotWritten) {  // defect 6
+  test::TempDir dir;
+  // extinction 1e308: adaptive's error control overflowed to inf and NaN
+  // and wrote them with exit 0. Whatever the integrator gives, vri either
+  // writes a finite image or refuses with one line and writes nothing.
+  const std::string scene = scene_with(
+      dir, replaced(test::kGoodScene, R"([[-6, 1, 0.5, 0, 0.5], [0, 0, 0, 1, 0]])",
+                    R"([[-6, 1, 1, 1, 1e308], [0, 1, 1, 1, 1e308]])"));
+  const auto out = dir / "out.npy";
+  const ProcessResult r = run("render " + scene + " -o " + out.string() + " --method adaptive", dir);
+  if (r.code == 0) {
+    for (float v : read_npy(out).data) ASSERT_TRUE(std::isfinite(v));
+  } else {
+    EXPECT_EQ(r.err.rfind("vri: error: the rendered image holds ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("non-finite values"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+TEST(CliRobustness, UnknownSceneKeysSuggestTheNearest) {  // defect 12
+  test::TempDir dir;
+  const std::string out = (dir / "out.npy").string();
+  const std::pair<std::string, std::string> typos[] = {
+      {R"("transfer_function")", R"("trasnfer_function")"}, {R"("width")", R"("widht")"},
+      {R"("tolerance")", R"("tolerence")"},                  {R"("dims")", R"("dimz")"},
+      {R"([0, 0, 0, 1, 0]]})", R"([0, 0, 0, 1, 0]], "pionts": 1})"}};
+  for (const auto& [from, to] : typos) {
+    const std::string expect = from == R"([0, 0, 0, 1, 0]]})" ? "points" : from.substr(1, from.size() - 2);
+    expect_refused("render " + scene_with(dir, replaced(test::kGoodScene, from, to), "typo.json") + " -o " + out,
+                   "(did you mean '" + expect + "'?)", dir);
+  }
+  const std::string lit = replaced(test::kGoodScene, R"("method")", R"("lighting": {"ambiant": 0.2}, "method")");
+  expect_refused("render " + scene_with(dir, lit, "lit.json") + " -o " + out, "lighting.ambiant: unknown key (did you mean 'ambient'?)", dir);
+}
+
+TEST(CliRobustness, UnknownSecondOrderBuilderIsAnError) {  // defect 12
+  test::TempDir dir;
+  for (const char* builder : {"fastt", "incremental"}) {
+    const std::string scene = scene_with(
+        dir, replaced(test::kGoodScene, R"("name": "exact", "tolerance": 1e-5)",
+                      std::string(R"("name": "preint2", "table_size": 8, "builder": ")") + builder + "\""));
+    expect_refused("render " + scene + " -o " + (dir / "out.npy").string(), "method.builder: expected", dir);
+  }
+}
+
+TEST(CliRobustness, CompareExitsOneWhenPixelsAreOverTheTolerance) {  // defect 12, SPEC 11
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, test::kGoodScene);
+  const auto a = (dir / "a.npy").string(), b = (dir / "b.npy").string();
+  ASSERT_EQ(run("render " + scene + " -o " + a, dir).code, 0);
+  ASSERT_EQ(run("render " + scene + " -o " + b + " --method riemann --step 2", dir).code, 0);
+  EXPECT_EQ(run("compare " + a + " " + a + " --tolerance 0", dir).code, 0);
+  EXPECT_EQ(run("compare " + a + " " + b + " --tolerance 0", dir).code, 1);
+  EXPECT_EQ(run("compare " + a + " " + b + " --tolerance 0 --max-share 1", dir).code, 0);
+  EXPECT_EQ(run("compare " + a + " " + b + " --tolerance 1", dir).code, 0);
+  EXPECT_NE(run("compare " + a + " " + b + " --max-share 2", dir).code, 0);
+}
+
+TEST(CliRobustness, AllTransparentImagesAreExplained) {  // defect 12
+  test::TempDir dir;
+  const std::string out = (dir / "out.npy").string();
+  const std::string away = replaced(test::kGoodScene, R"("target": [5.5, 5.5, 5.5])", R"("target": [5.5, 5.5, 80])");
+  ProcessResult r = run("render " + scene_with(dir, away) + " -o " + out, dir);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("vri: warning: every pixel is transparent: the camera looks away from the volume"),
+            std::string::npos) << r.err;
+  const std::string range = replaced(test::kGoodScene, R"([[-6, 1, 0.5, 0, 0.5], [0, 0, 0, 1, 0]])",
+                                     R"([[100, 1, 1, 1, 0], [200, 1, 1, 1, 5]])");
+  r = run("render " + scene_with(dir, range) + " -o " + out, dir);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("the transfer function is transparent over the data range"), std::string::npos) << r.err;
+  r = run("render " + scene_with(dir, test::kGoodScene) + " -o " + out, dir);
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
+TEST(CliRobustness, MessagesNameTheKeyAndEscapeTheInput) {  // defects 10, 14
+  test::TempDir dir;
+  const std::string out = (dir / "out.npy").string();
+  expect_refused("render " + scene_with(dir, replaced(test::kGoodScene, R"("width": 16)", R"("width": -3)")) + " -o " + out,
+                 "scene.json': camera.width: expected a positive integer, found -3", dir);
+  const std::string seeded = replaced(test::kGoodScene, R"("builtin": "sphere")", R"("builtin": "random", "seed": 1e300)");
+  expect_refused("render " + scene_with(dir, seeded) + " -o " + out, "volume.seed: expected an integer in [0, ", dir);
+  // a control byte and a byte that is not UTF-8 come back as \xNN
+  const std::string odd = replaced(test::kGoodScene, R"("builtin": "sphere")", "\"builtin\": \"sph\\u0007\\nere\"");
+  expect_refused("render " + scene_with(dir, odd) + " -o " + out, R"(found "sph\u0007\nere")", dir);
+  expect_refused("render " + scene_with(dir, "{\"volume\": \"\xff\n\"}") + " -o " + out, "\\xFF", dir);
+  expect_refused("render " + scene_with(dir, "{\"volume\": ") + " -o " + out, "scene.json': malformed JSON", dir);
+}
+
+}  // namespace
+}  // namespace vri
