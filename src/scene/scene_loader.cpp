@@ -187,9 +187,9 @@ struct Reader {
 };
 
 // Every key a volume object may hold (grid, builtin, raw, mesh).
-constexpr std::array<std::string_view, 14> kVolumeKeys = {
+constexpr std::array<std::string_view, 15> kVolumeKeys = {
     "builtin", "dims", "f_m", "alpha", "radius", "seed", "file", "type", "endian",
-    "spacing", "origin", "scalars", "grid", "tets_per_cell"};
+    "spacing", "origin", "scalars", "grid", "tets_per_cell", "allow_outside_paths"};
 
 TransferFunction transfer_function_from(const json& j, const Reader& r, bool may_name_file) {
   r.object(j);
