@@ -1,9 +1,10 @@
 #pragma once
-// BruteBuilder: the reference. Every entry is integrated on its own, piece by
-// piece (slab_integral.hpp), each piece's colour integral int c tau T dt
-// evaluated directly by 8-point Gauss-Legendre on panels of optical depth
-// <= 1/2 with T in closed form - a different formula from linear_piece, so
-// the builders check each other. O(N^3) for N x N (Lum, Wilson & Ma 2004, §4.1).
+// BruteBuilder: every entry integrated on its own, piece by piece
+// (slab_integral.hpp, control points inside a bin included), each piece's
+// colour integral int c tau T dt evaluated directly by 8-point Gauss-Legendre
+// on panels of optical depth <= 1/2 with T in closed form - a different formula from linear_piece, so
+// the builders check each other (`exact`, exact_builder.hpp, is the
+// reference). O(N^3) for N x N (Lum, Wilson & Ma 2004, §4.1).
 #include "vri/tables/slab_rgba.hpp"
 #include "vri/tables/table_builder.hpp"
 
