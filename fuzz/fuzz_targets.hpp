@@ -82,7 +82,7 @@ inline void nrrd(std::span<const std::byte> data) {
 inline void nrrd_gzip(std::span<const std::byte> data) {
   if (data.size() < 3) return;
   std::string text = "NRRD0004\ntype: uchar\ndimension: 3\nencoding: gzip\nsizes:";
-  for (int a = 0; a < 3; ++a) text += " " + std::to_string(1 + std::to_integer<unsigned>(data[a]) % 16);
+  for (int a = 0; a < 3; ++a) (text += ' ') += std::to_string(1 + std::to_integer<unsigned>(data[a]) % 16);
   text += "\n\n";
   text.append(text_of(data.subspan(3)));
   read_nrrd(file_of(std::as_bytes(std::span(text)), "g.nrrd"));

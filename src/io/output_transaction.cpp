@@ -96,7 +96,11 @@ void OutputTransaction::stage(const fs::path& target, std::span<const std::byte>
   {
     const BlockTermination hold;
     for (int k = 0; k < 100 && fd < 0; ++k) {
-      temp = dir / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()) + "." + std::to_string(k));
+      // Appended piecewise: GCC 12's -Wrestrict misfires on "." + string.
+      std::string name = ".";
+      name += target.filename().string();
+      name += ".tmp" + std::to_string(::getpid()) + "." + std::to_string(k);
+      temp = dir / name;
       fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
       if (fd < 0 && errno != EEXIST) fail(target, std::strerror(errno));
     }
