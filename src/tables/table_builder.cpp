@@ -31,11 +31,6 @@ void check_length_tables(int lengths, double max_length, int n, int tables) {
                 " entries is too large");
 }
 
-const std::vector<std::string>& known_builder_names() {
-  static const std::vector<std::string> names = {"brute", "incremental", "sliced", "engel", "exact"};
-  return names;
-}
-
 std::unique_ptr<TableBuilder> make_table_builder(const std::string& name) {
   if (name == "brute") return std::make_unique<BruteBuilder>();
   if (name == "incremental") return std::make_unique<IncrementalBuilder>();
