@@ -2,7 +2,8 @@
 # second_order_rays.sh [BUILD_DIR]: the ray table of docs/SECOND_ORDER.md ("One
 # ray"): for neghip, fuel and bucky and the samplings step 2, step 1 and cell
 # faces + midpoints, the mean samples per ray and mean xi of the 0th/1st/2nd-
-# order approximations over a 9 x 9 grid of pixels (160 ... 352 of 512).
+# order approximations over a 9 x 9 grid of pixels (160 ... 352 of 512), and
+# the plots of one ray (pixel 240 250) in docs/second_order/
 set -euo pipefail
 cd "$(dirname "$0")/.."
 vri=${1:-build}/vri; tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -16,3 +17,6 @@ for name in neghip fuel bucky; do
       END { printf "| %s | %s | %d | %.0f | %.3g | %.3g | %.3g | %.2f |\n", nm, st, n, k / n, a / n, b / n, c / n, c / b }'
   done
 done
+# The two plots of one neghip ray linked from the same section.
+"$vri" ray scenes/neghip.json --pixel 240 250 --step 2 -o "$tmp/ray.csv" --plot docs/second_order/neghip_ray_240_250_2.svg
+"$vri" ray scenes/neghip.json --pixel 240 250 -o "$tmp/ray.csv" --plot docs/second_order/neghip_ray_240_250_dual.svg

@@ -25,7 +25,7 @@ std::string ray_signal_svg(const RaySignal& sig) {
   o.precision(6);
   o << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << 3 * panel_h + 30
     << "' font-family='sans-serif' font-size='13'>\n<rect width='100%' height='100%' fill='white'/>\n";
-  const char* names[3] = {"0th order (midpoint)", "1st order (trapezoid)", "2nd order (parabola)"};
+  const char* names[3] = {"0th order (nearest-sample hold)", "1st order (trapezoid)", "2nd order (parabola)"};
   for (int order = 0; order < 3; ++order) {
     const double y0 = 20 + order * panel_h;
     auto X = [&](double t) { return margin + (W - 2 * margin) * (t - sig.t0()) / (sig.t1() - sig.t0()); };

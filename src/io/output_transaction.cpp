@@ -52,8 +52,10 @@ extern "C" void unlink_temporaries_and_reraise(int sig) {
   ::raise(sig);
 }
 
-// Signals that would kill the process between creating a temporary and
-// registering it are held back for that moment.
+// Signals that would kill the process while a temporary is created are held
+// back on this thread for that moment. Another thread (a TBB worker) may still
+// take the signal, so each name is registered before the file exists: the
+// handler then unlinks a file that is not there yet, never misses one.
 class BlockTermination {
  public:
   BlockTermination() {
@@ -101,15 +103,14 @@ void OutputTransaction::stage(const fs::path& target, std::span<const std::byte>
       name += target.filename().string();
       name += ".tmp" + std::to_string(::getpid()) + "." + std::to_string(k);
       temp = dir / name;
+      if (register_temp(temp.string()) < 0) fail(target, "too many outputs");
       fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-      if (fd < 0 && errno != EEXIST) fail(target, std::strerror(errno));
+      if (fd >= 0) break;
+      const int why = errno;
+      unregister_temp(temp);  // not ours: the handler must leave it alone
+      if (why != EEXIST) fail(target, std::strerror(why));
     }
     if (fd < 0) fail(target, "no free temporary name beside it");
-    if (register_temp(temp.string()) < 0) {
-      ::close(fd);
-      ::unlink(temp.c_str());
-      fail(target, "too many outputs");
-    }
     staged_.push_back({temp, target});
   }
   const char* p = reinterpret_cast<const char*>(bytes.data());

@@ -7,8 +7,9 @@
 // Samples: with a step h, t_k = t0 + k h (and t1); without one, the paper's
 // "ideal" sampling: every cell-face crossing plus the midpoint of each cell
 // piece, so that each second-order slab lies inside one cell.
-//   order 0: each sample's value held up to halfway to its neighbours (the
-//            midpoint rule on uniform samples);
+//   order 0: a nearest-sample hold: each sample's value held up to halfway to
+//            its neighbours (on uniform samples the midpoint rule of the
+//            cell between two half-steps);
 //   order 1: linear between consecutive samples (trapezoid rule);
 //   order 2: the Lagrange parabola through samples 2j, 2j+1, 2j+2 (Simpson's
 //            rule); with an odd number of intervals the last is linear.
