@@ -71,7 +71,12 @@ int run_render(const RenderArgs& args) {
   const int threads = checked_threads(args.threads);
 
   Scene scene = load_scene(args.scene);
-  if (args.method) scene.method.name = *args.method;
+  if (args.method && *args.method != scene.method.name) {
+    // The scene's table_size was chosen for its own method: preint2-dual,
+    // named here instead, keeps its own default unless --table-size is given.
+    scene.method.name = *args.method;
+    scene.method.table_size_given = false;
+  }
   if (args.step) scene.method.step = *args.step;
   if (args.tolerance) scene.method.tolerance = *args.tolerance;
   if (args.table_size) {

@@ -120,5 +120,24 @@ TEST(Cli, BadInputIsRefusedCleanly) {
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
 }
 
+// preint2-dual keeps its own default table size (64) when the command line
+// names it over a scene written for another method: the bundled lit scenes
+// say "table_size": 256 for preint1, which as a second-order length table
+// would need 3 GiB (issue 16, item 5).
+TEST(Cli, Preint2DualDefaultsWorkOnEveryBundledGridScene) {
+  test::TempDir dir;
+  int grids = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::source_path("scenes"))) {
+    if (entry.path().filename().string().rfind("blunt_fin", 0) == 0) continue;  // tetrahedral meshes
+    const auto out = dir / (entry.path().stem().string() + ".npy");
+    const ProcessResult r =
+        run("render " + entry.path().string() + " -o " + out.string() + " --method preint2-dual --width 12 --height 12", dir);
+    EXPECT_EQ(r.code, 0) << entry.path() << ": " << r.err;
+    EXPECT_TRUE(std::filesystem::exists(out)) << entry.path();
+    ++grids;
+  }
+  EXPECT_GE(grids, 14);
+}
+
 }  // namespace
 }  // namespace vri
