@@ -228,6 +228,9 @@ GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r
   std::optional<GridVolume> vol;
   if (j.contains("builtin")) {
     const std::string name = r.string(j, "builtin");
+    // Keys of volume files mean nothing here: refused, not ignored.
+    for (const char* key : {"file", "type", "endian", "allow_outside_paths", "scalars"})
+      if (j.contains(key)) throw Error(r.where(key) + ": applies to volume files, not to builtin volumes");
     auto dims_or = [&](std::array<int, 3> def) {
       if (!j.contains("dims")) return def;
       const auto d = r.dims(j, "dims");

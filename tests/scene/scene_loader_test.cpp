@@ -85,6 +85,9 @@ TEST(SceneLoader, RefusesBadScenesWithOneClearLine) {
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "sphere", "dims": [8, 0, 8]}})", "at least 2");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "sphere", "dims": [100000, 100000, 100000]}})", "exceeds the limit");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "teapot"}})", "volume.builtin: expected marschner_lobb, sphere, random or tetrahedralized, found \"teapot\"");
+  // A file's keys on a builtin volume (found by fuzz_scene: it tetrahedralized a 64^3 sphere, ignoring "file").
+  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "sphere", "file": [1, 4, 4]}})",
+                 "volume.file: applies to volume files, not to builtin volumes");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "../data/bucky_32x32x32_uint8.raw", "dims": [32, 32, 31]}})",
                  "bytes");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "../data/bucky_32x32x32_uint8.raw", "dims": [32, 32, 32], "type": "complex"}})",
