@@ -1,0 +1,25 @@
+# Installs the library, its headers, the vri program and the CMake package
+# (lib/cmake/vri) so that find_package(vri) consumers build: see
+# examples/consumer and tests/package/consumer_test.sh.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(VRI_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/vri CACHE STRING
+    "Where vriConfig.cmake is installed, relative to the prefix")
+
+install(TARGETS vri vri-cli EXPORT vriTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/vri DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(FILES ${PROJECT_BINARY_DIR}/include/vri/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/vri)
+install(EXPORT vriTargets NAMESPACE vri:: DESTINATION ${VRI_INSTALL_CMAKEDIR})
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/vriConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/vriConfig.cmake
+                              INSTALL_DESTINATION ${VRI_INSTALL_CMAKEDIR})
+# 0.x: a minor release may break the API, so only the same minor version is compatible.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/vriConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/vriConfig.cmake ${PROJECT_BINARY_DIR}/vriConfigVersion.cmake
+        DESTINATION ${VRI_INSTALL_CMAKEDIR})
