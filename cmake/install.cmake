@@ -7,10 +7,11 @@ include(CMakePackageConfigHelpers)
 set(VRI_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/vri CACHE STRING
     "Where vriConfig.cmake is installed, relative to the prefix")
 
-install(TARGETS vri vri-cli EXPORT vriTargets
+install(TARGETS vri EXPORT vriTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# vri-cli (OUTPUT_NAME vri) becomes bin/vri, exported as vri::vri-cli.
+install(TARGETS vri-cli EXPORT vriTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/vri DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${PROJECT_BINARY_DIR}/include/vri/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/vri)
 install(EXPORT vriTargets NAMESPACE vri:: DESTINATION ${VRI_INSTALL_CMAKEDIR})
