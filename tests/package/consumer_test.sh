@@ -10,7 +10,10 @@ cmake=${CMAKE:-cmake}  # the build's own cmake, from tests/CMakeLists.txt
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 scene=$src/scenes/marschner_lobb.json
 
-"$cmake" --install "$build" --prefix "$tmp/prefix" >/dev/null
+# Only vri's own components: the python component goes to the system's site-packages.
+for component in runtime devel; do
+  "$cmake" --install "$build" --prefix "$tmp/prefix" --component $component >/dev/null
+done
 for f in bin/vri include/vri/version.hpp include/vri/scene/scene.hpp; do
   [[ -e $tmp/prefix/$f ]] || { echo "FAIL: $f not installed"; exit 1; }
 done
