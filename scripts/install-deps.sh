@@ -4,7 +4,10 @@
 set -euo pipefail
 pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1g-dev
       libtbb-dev libgtest-dev libbenchmark-dev python3 python3-numpy
-      clang libclang-rt-14-dev)  # clang + libFuzzer: the fuzz step (scripts/fuzz.sh)
+      clang libclang-rt-14-dev  # clang + libFuzzer: the fuzz step (scripts/fuzz.sh)
+      # the Python module (python/), its tests, examples/ and its notebook
+      python3-dev pybind11-dev python3-pybind11 python3-pytest python3-matplotlib
+      jupyter-nbconvert python3-ipykernel)
 # --vtk: also what the VTK side-by-side scripts need (scripts/vtk_*side_by_side.py).
 if [ "${1:-}" = --vtk ]; then pkgs+=(python3-vtk9 xvfb xauth); fi
 missing=()

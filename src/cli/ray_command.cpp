@@ -2,7 +2,6 @@
 // the scalar signal along one pixel's ray and its 0th/1st/2nd-order
 // approximations with their errors xi (see vri/analysis/ray_signal.hpp).
 #include <array>
-#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -11,9 +10,8 @@
 #include <string>
 
 #include "commands.hpp"
+#include "vri/analysis/pixel_signal.hpp"
 #include "vri/analysis/ray_plot.hpp"
-#include "vri/analysis/ray_signal.hpp"
-#include "vri/camera/camera.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
 #include "vri/io/file_io.hpp"
@@ -37,16 +35,8 @@ int run_ray(const RayArgs& args) {
   if (args.plot && std::filesystem::path(*args.plot).extension() != ".svg")
     throw Error("plot '" + *args.plot + "' must end in .svg");
   const Scene scene = load_scene(args.scene);
-  const Camera camera(scene.camera);
   const auto [px, py] = args.pixel;
-  if (px < 0 || py < 0 || px >= camera.width() || py >= camera.height())
-    throw Error("pixel (" + std::to_string(px) + ", " + std::to_string(py) + ") is outside the " +
-                std::to_string(camera.width()) + "x" + std::to_string(camera.height()) + " image");
-  if (args.step && !(*args.step >= 1e-4 && std::isfinite(*args.step)))
-    throw Error("--step: expected a finite number >= 1e-4 (voxel units), found " + format_g(*args.step));
-  const std::optional<double> step =
-      args.step ? std::optional<double>(*args.step * scene.grid().voxel_unit()) : std::nullopt;
-  const RaySignal sig(scene.grid(), camera.ray(px, py), step);
+  const RaySignal sig = pixel_signal(scene, px, py, args.step);
 
   const double xi[3] = {sig.xi(0), sig.xi(1), sig.xi(2)};
   std::ostringstream csv;
@@ -55,20 +45,13 @@ int run_ray(const RayArgs& args) {
       << (args.step ? "step " + format_g(*args.step) + " voxel units" : std::string("cell faces + midpoints"))
       << "\n# xi0 = " << xi[0] << ", xi1 = " << xi[1] << ", xi2 = " << xi[2] << "\n"
       << "t,signal,order0,order1,order2,is_sample\n";
-  constexpr int kRowsPerInterval = 8;
-  const auto& ts = sig.sample_t();
-  for (std::size_t k = 0; k < ts.size(); ++k) {
-    const int rows = k + 1 < ts.size() ? kRowsPerInterval : 1;
-    for (int i = 0; i < rows; ++i) {
-      const double t = i == 0 ? ts[k] : ts[k] + (ts[k + 1] - ts[k]) * i / rows;
-      csv << t << "," << sig.signal(t) << "," << sig.approximation(0, t) << "," << sig.approximation(1, t) << ","
-          << sig.approximation(2, t) << "," << (i == 0 ? 1 : 0) << "\n";
-    }
-  }
+  for (const RaySignalRow& r : signal_rows(sig))
+    csv << r.t << "," << r.signal << "," << r.order[0] << "," << r.order[1] << "," << r.order[2] << ","
+        << (r.is_sample ? 1 : 0) << "\n";
   const std::string svg = args.plot ? ray_signal_svg(sig) : std::string();
   write_file_atomically(args.output, bytes_of(csv.str()));
   if (args.plot) write_file_atomically(*args.plot, bytes_of(svg));
-  std::printf("samples %zu  xi0 %.6g  xi1 %.6g  xi2 %.6g\n", ts.size(), xi[0], xi[1], xi[2]);
+  std::printf("samples %zu  xi0 %.6g  xi1 %.6g  xi2 %.6g\n", sig.sample_t().size(), xi[0], xi[1], xi[2]);
   return 0;
 }
 

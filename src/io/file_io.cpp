@@ -17,33 +17,33 @@ namespace fs = std::filesystem;
 
 std::vector<std::byte> read_file(const fs::path& path) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) throw Error("cannot read '" + path.string() + "': is a directory");
+  if (fs::is_directory(path, ec)) throw FileError("cannot read '" + path.string() + "': is a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in)
-    throw Error("cannot open '" + path.string() + "': " + std::strerror(errno));
+    throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();
-  if (size < 0) throw Error("cannot read '" + path.string() + "'");
+  if (size < 0) throw FileError("cannot read '" + path.string() + "'");
   in.seekg(0);
   std::vector<std::byte> bytes(static_cast<std::size_t>(size));
   if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), size))
-    throw Error("cannot read '" + path.string() + "'");
+    throw FileError("cannot read '" + path.string() + "'");
   return bytes;
 }
 
 std::uint64_t checked_file_size(const fs::path& path) {
   std::error_code ec;
   const auto size = fs::file_size(path, ec);
-  if (ec) throw Error("cannot open '" + path.string() + "': " + ec.message());
+  if (ec) throw FileError("cannot open '" + path.string() + "': " + ec.message());
   return size;
 }
 
 void read_file_range(const fs::path& path, std::uint64_t offset, std::span<std::byte> out) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open '" + path.string() + "': " + std::strerror(errno));
+  if (!in) throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
   in.seekg(static_cast<std::streamoff>(offset));
   if (!in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(out.size())))
-    throw Error("cannot read " + std::to_string(out.size()) + " bytes at " + std::to_string(offset) + " of '" +
+    throw FileError("cannot read " + std::to_string(out.size()) + " bytes at " + std::to_string(offset) + " of '" +
                 path.string() + "'");
 }
 

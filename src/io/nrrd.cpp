@@ -141,7 +141,7 @@ std::vector<std::vector<double>> parse_vectors(const std::string& text, const st
 GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
   const std::string where = "NRRD '" + path.string() + "'";
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open '" + path.string() + "': " + std::strerror(errno));
+  if (!in) throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
   std::string line;
   if (!std::getline(in, line) || line.rfind("NRRD000", 0) != 0)
     throw Error(where + " does not start with the NRRD magic");

@@ -72,7 +72,7 @@ class BlockTermination {
 };
 
 [[noreturn]] void fail(const fs::path& target, const std::string& why) {
-  throw Error("cannot write '" + target.string() + "': " + why);
+  throw FileError("cannot write '" + target.string() + "': " + why);
 }
 
 }  // namespace

@@ -391,13 +391,18 @@ TransferFunction load_transfer_function(const fs::path& path) {
   return parse_transfer_function(text_of(path), "transfer function '" + printable(path.string()) + "'");
 }
 
-Scene parse_scene(std::string_view text, const fs::path& base, const std::string& source) {
+namespace {
+
+// A scene from JSON; its volume read from the JSON's "volume", or `given`.
+Scene scene_from(std::string_view text, const fs::path& base, const std::string& source, std::optional<Volume> given) {
   const json j = parse_json(text, source);
   const Reader r{source, ""};
   r.object(j);
   r.known(j, {"volume", "transfer_function", "camera", "method", "lighting", "background"});
   for (const char* key : {"volume", "transfer_function", "camera"})
-    if (!j.contains(key)) throw Error(source + ": missing '" + std::string(key) + "'");
+    if (!j.contains(key) && !(given && std::string_view(key) == "volume"))
+      throw Error(source + ": missing '" + std::string(key) + "'");
+  if (given && j.contains("volume")) throw Error(source + ": the volume is given, so 'volume' must not be");
 
   const CameraSpec camera = camera_from(j.at("camera"), r);
   const MethodSpec method = j.contains("method") ? method_from(j.at("method"), r) : MethodSpec{};
@@ -421,8 +426,18 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
     tf.emplace(transfer_function_from(tfj, t, true));
   }
 
-  Volume volume = volume_from(j.at("volume"), base, r);
+  Volume volume = given ? std::move(*given) : volume_from(j.at("volume"), base, r);
   return Scene{std::move(volume), std::move(*tf), camera, lighting, background, method};
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, const fs::path& base, const std::string& source) {
+  return scene_from(text, base, source, std::nullopt);
+}
+
+Scene parse_scene(std::string_view text, Volume volume, const fs::path& base, const std::string& source) {
+  return scene_from(text, base, source, std::move(volume));
 }
 
 Scene load_scene(const fs::path& path) {

@@ -28,8 +28,28 @@ std::uint64_t GridVolume::checked_sample_count(std::array<std::int64_t, 3> dims)
   return n;
 }
 
+namespace {
+
+// Owned samples moved behind a shared owner, and the view of them.
+std::pair<GridVolume::SampleView, std::shared_ptr<const void>> shared_samples(GridVolume::Samples values) {
+  auto owner = std::make_shared<const GridVolume::Samples>(std::move(values));
+  const GridVolume::SampleView view =
+      std::visit([](const auto& v) -> GridVolume::SampleView { return std::span(v); }, *owner);
+  return {view, std::move(owner)};
+}
+
+}  // namespace
+
 GridVolume::GridVolume(std::array<int, 3> dims, Samples values, Vec3 spacing, Vec3 origin)
-    : dims_(dims), values_(std::move(values)) {
+    : GridVolume(dims, shared_samples(std::move(values)), spacing, origin) {}
+
+GridVolume::GridVolume(std::array<int, 3> dims, SampleView values, std::shared_ptr<const void> owner, Vec3 spacing,
+                       Vec3 origin)
+    : GridVolume(dims, std::pair(values, std::move(owner)), spacing, origin) {}
+
+GridVolume::GridVolume(std::array<int, 3> dims, std::pair<SampleView, std::shared_ptr<const void>> shared,
+                       Vec3 spacing, Vec3 origin)
+    : dims_(dims), values_(shared.first), owner_(std::move(shared.second)) {
   const std::uint64_t n = checked_sample_count({dims[0], dims[1], dims[2]});
   if (size() != n)
     throw Error("volume has " + std::to_string(size()) + " samples, dims need " + std::to_string(n));

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
+#include <span>
 #include <random>
 #include <utility>
 
@@ -23,6 +26,24 @@ TEST(GridVolume, TrilinearReproducesTrilinearFields) {
   const auto vol = test::volume_from({5, 4, 6}, f, {0.5, 2, 1.5}, {-1, 3, 2});
   for (Vec3 p : {Vec3{-1, 3, 2}, Vec3{0.3, 4.1, 5.5}, Vec3{1, 9, 9.5}, Vec3{0.77, 7.3, 3.21}})
     EXPECT_NEAR(vol.sample(p), f(p.x, p.y, p.z), 1e-5) << p.x << " " << p.y << " " << p.z;
+}
+
+TEST(GridVolume, ViewsSamplesItDoesNotOwnAndKeepsTheirOwnerAlive) {
+  auto data = std::make_shared<std::vector<std::uint16_t>>(std::vector<std::uint16_t>{0, 1, 2, 3, 4, 5, 6, 700});
+  const std::weak_ptr<std::vector<std::uint16_t>> watch = data;
+  {
+    const GridVolume view({2, 2, 2}, GridVolume::SampleView(std::span<const std::uint16_t>(*data)), data);
+    data.reset();
+    EXPECT_FALSE(watch.expired());
+    const GridVolume copy = view;  // shares the samples: the same memory
+    EXPECT_EQ(copy.type(), ScalarType::UInt16);
+    EXPECT_EQ(copy.at(1, 1, 1), 700.f);
+    EXPECT_EQ(copy.max_value(), 700.f);
+    copy.visit([&](auto a) { view.visit([&](auto b) { EXPECT_EQ(static_cast<const void*>(a.data()), b.data()); }); });
+  }
+  EXPECT_TRUE(watch.expired());  // the last copy let the owner go
+  const std::vector<float> bad{0, 1, 2, 3, 4, 5, 6, std::nanf("")};
+  EXPECT_THROW(GridVolume({2, 2, 2}, GridVolume::SampleView(std::span<const float>(bad)), nullptr), Error);
 }
 
 TEST(GridVolume, BoxAndVoxelUnit) {

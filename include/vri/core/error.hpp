@@ -11,4 +11,11 @@ class Error : public std::runtime_error {
   explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+// A file that cannot be opened, read or written (the operating system said
+// no: missing, a directory, no permission, short). Python raises it as OSError.
+class FileError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace vri

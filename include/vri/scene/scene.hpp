@@ -36,6 +36,10 @@ struct Scene {
 Scene load_scene(const std::filesystem::path& path);
 Scene parse_scene(std::string_view json_text, const std::filesystem::path& base_dir,
                   const std::string& source_name = "scene");
+// A scene whose volume is given (built in memory: numpy arrays from Python)
+// rather than named: the JSON holds every other key and no "volume".
+Scene parse_scene(std::string_view json_text, Volume volume, const std::filesystem::path& base_dir,
+                  const std::string& source_name = "scene");
 
 // A transfer function on its own: {"points": ...} or {"opacity_points": ..., "unit_distance": u}.
 TransferFunction load_transfer_function(const std::filesystem::path& path);

@@ -5,12 +5,16 @@
 // uint8 volume holds 128 MiB, not 512), float otherwise; every conversion to
 // float is exact, so each reader gets the values a float volume would hold.
 // Hot loops dispatch on the type once (visit) and read typed samples.
+// The samples are immutable and shared: a copy of a GridVolume shares them,
+// and a volume may view memory it does not own (a numpy array from Python).
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -29,9 +33,17 @@ class GridVolume {
   using Samples = std::variant<std::vector<std::uint8_t>, std::vector<std::uint16_t>,
                                std::vector<std::int16_t>, std::vector<float>>;
 
+  // The same types viewed in place.
+  using SampleView = std::variant<std::span<const std::uint8_t>, std::span<const std::uint16_t>,
+                                  std::span<const std::int16_t>, std::span<const float>>;
+
   // Checks dims >= 2, the sample count == nx*ny*nz, every value finite,
   // spacing > 0; throws vri::Error otherwise.
   GridVolume(std::array<int, 3> dims, Samples values, Vec3 spacing = {1, 1, 1}, Vec3 origin = {0, 0, 0});
+  // The same checks on samples viewed without a copy; `owner` keeps their
+  // memory alive as long as any copy of the volume lives.
+  GridVolume(std::array<int, 3> dims, SampleView values, std::shared_ptr<const void> owner,
+             Vec3 spacing = {1, 1, 1}, Vec3 origin = {0, 0, 0});
 
   // Throws vri::Error unless dims describe an acceptable volume; returns the sample count.
   static std::uint64_t checked_sample_count(std::array<std::int64_t, 3> dims);
@@ -58,7 +70,7 @@ class GridVolume {
   // f(std::span<const T>) with the samples as stored.
   template <class F>
   decltype(auto) visit(F&& f) const {
-    return std::visit([&](const auto& v) -> decltype(auto) { return f(std::span(v)); }, values_);
+    return std::visit([&](auto v) -> decltype(auto) { return f(v); }, values_);
   }
 
   std::size_t index(int i, int j, int k) const {
@@ -68,7 +80,7 @@ class GridVolume {
   }
   // One sample as float (a dispatch each: not for hot loops).
   float value(std::size_t index) const {
-    return std::visit([index](const auto& v) { return static_cast<float>(v[index]); }, values_);
+    return std::visit([index](auto v) { return static_cast<float>(v[index]); }, values_);
   }
   float at(int i, int j, int k) const { return value(index(i, j, k)); }
 
@@ -89,8 +101,12 @@ class GridVolume {
   double sample(const T* values, Vec3 p) const;
 
  private:
+  GridVolume(std::array<int, 3> dims, std::pair<SampleView, std::shared_ptr<const void>> shared, Vec3 spacing,
+             Vec3 origin);
+
   std::array<int, 3> dims_;
-  Samples values_;
+  SampleView values_;
+  std::shared_ptr<const void> owner_;
   Vec3 spacing_, origin_;
   float min_ = 0, max_ = 0;
 };

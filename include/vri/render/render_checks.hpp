@@ -1,14 +1,16 @@
 #pragma once
-// Checks `vri render` makes around the render itself (issue 17): parameters
-// that would crash or hang it, work caps estimated before it, outputs that
-// must not be written (NaN/Inf) and images worth a warning (all transparent).
+// Checks every render makes around the render itself (issue 17; the CLI and
+// the Python module alike): parameters that would crash or hang it, work caps
+// estimated before it, images that must not be returned (NaN/Inf) and images
+// worth a warning (all transparent). Messages name the CLI flag and the scene key.
+#include <optional>
 #include <string>
 
 #include "vri/camera/camera.hpp"
 #include "vri/render/image.hpp"
 #include "vri/scene/scene.hpp"
 
-namespace vri::cli {
+namespace vri {
 
 // Most worker threads accepted (TBB crashes on absurd counts).
 inline constexpr int kMaxThreads = 1024;
@@ -27,8 +29,8 @@ void check_work(const Scene& scene, const Camera& camera);
 // vri::Error if the image holds a NaN or an infinity (no file is written).
 void refuse_non_finite(const Image& image, const std::string& what);
 
-// A one-line warning on stderr naming the likely cause when every pixel is
-// transparent; true if it warned.
-bool warn_if_transparent(const Image& image, const Scene& scene, const Camera& camera);
+// When every pixel is transparent, the likely cause in one line ("the camera
+// looks away from the volume ..."), for a warning; nullopt otherwise.
+std::optional<std::string> transparency_cause(const Image& image, const Scene& scene, const Camera& camera);
 
-}  // namespace vri::cli
+}  // namespace vri

@@ -1,13 +1,12 @@
-#include "render_checks.hpp"
+#include "vri/render/render_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
 
-namespace vri::cli {
+namespace vri {
 
 namespace {
 
@@ -99,10 +98,10 @@ void refuse_non_finite(const Image& image, const std::string& what) {
               "); nothing was written");
 }
 
-bool warn_if_transparent(const Image& image, const Scene& scene, const Camera& camera) {
+std::optional<std::string> transparency_cause(const Image& image, const Scene& scene, const Camera& camera) {
   const auto& d = image.data();
   for (std::size_t i = 3; i < d.size(); i += 4)
-    if (d[i] != 0) return false;
+    if (d[i] != 0) return std::nullopt;
   const Bounds b = bounds_of(scene);
   // The transfer function is piecewise linear: its largest extinction over
   // the data range lies at an end or at a breakpoint inside.
@@ -122,8 +121,7 @@ bool warn_if_transparent(const Image& image, const Scene& scene, const Camera& c
             "] (its control points span [" + g(tf.s_lo()) + ", " + g(tf.s_hi()) + "])";
   else
     cause = "the rays cross only data the transfer function makes transparent";
-  std::cerr << "vri: warning: every pixel is transparent: " << cause << "\n";
-  return true;
+  return cause;
 }
 
-}  // namespace vri::cli
+}  // namespace vri

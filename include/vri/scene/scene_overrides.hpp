@@ -1,0 +1,24 @@
+#pragma once
+// SceneOverrides: what a caller changes in a loaded scene before rendering it
+// (the `vri render` flags, the keyword arguments of the Python vri.render).
+// One place applies them, so both front ends follow the same rules.
+#include <optional>
+#include <string>
+
+#include "vri/scene/scene.hpp"
+
+namespace vri {
+
+struct SceneOverrides {
+  std::optional<std::string> method, strategy;
+  std::optional<double> step, tolerance, termination, max_samples, max_work, h0, hmin, hmax;
+  std::optional<int> table_size, iterations, width, height;
+  std::optional<bool> skip_empty, float_math;
+};
+
+// Sets every given field. A method other than the scene's drops the scene's
+// table_size (it was chosen for the scene's own method: preint2-dual then
+// keeps its default, 64) unless table_size is given too.
+void apply_overrides(Scene& scene, const SceneOverrides& overrides);
+
+}  // namespace vri

@@ -1,0 +1,37 @@
+// The Python module `vri`: volume rendering with measurable accuracy, on numpy.
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "vri/core/error.hpp"
+
+namespace vri::python {
+
+void bind_errors(py::module_&) {
+  // The CLI's one-line messages, as the Python exception a caller expects.
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const FileError& e) {
+      PyErr_SetString(PyExc_OSError, e.what());
+    } catch (const Error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+}
+
+}  // namespace vri::python
+
+PYBIND11_MODULE(vri, m) {
+  m.doc() =
+      "vri: volume rendering with measurable accuracy.\n\n"
+      "Render regular-grid volumes and tetrahedral meshes with the integration methods of\n"
+      "SPEC §9 (riemann, preint1, preint2, preint2-dual, adaptive, exact, pt, pt-cylindrical,\n"
+      "tet-raycast) and compare them against the exact integral. Images are float32 numpy\n"
+      "arrays (H, W, 4), premultiplied RGBA, the same bytes as `vri render -o X.npy`.";
+  m.attr("__version__") = VRI_VERSION;
+  vri::python::bind_errors(m);
+  vri::python::bind_volumes(m);
+  vri::python::bind_scenes(m);
+  vri::python::bind_rendering(m);
+  vri::python::bind_analysis(m);
+}

@@ -1,0 +1,175 @@
+// vri.render, vri.error_estimate, vri.trace: a scene rendered as the CLI's
+// `vri render` renders it (the same SceneOverrides and SceneRenderer), with
+// the GIL released while the C++ threads work.
+#include <optional>
+#include <string>
+
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "vri/core/error.hpp"
+#include "vri/integrators/error_estimating_integrator.hpp"
+#include "vri/render/render_checks.hpp"
+#include "vri/render/scene_renderer.hpp"
+#include "vri/scene/scene_overrides.hpp"
+
+namespace vri::python {
+
+namespace {
+
+template <class T>
+std::optional<T> keyword(const char* function, const std::string& key, const py::handle& value) {
+  try {
+    return value.cast<T>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(std::string(function) + "(): '" + key + "' expected " +
+                         (std::is_same_v<T, std::string> ? "a str" : std::is_same_v<T, bool> ? "a bool"
+                          : std::is_same_v<T, int> ? "an int" : "a number") +
+                         ", got " + py::type::of(value).attr("__name__").cast<std::string>());
+  }
+}
+
+// The keyword arguments shared by render, error_estimate and trace: the
+// `vri render` flags by their Python names (None leaves the scene's value).
+struct RenderRequest {
+  SceneOverrides overrides;
+  int threads = 0;
+};
+
+RenderRequest request_of(const char* function, const py::kwargs& kwargs) {
+  RenderRequest r;
+  SceneOverrides& o = r.overrides;
+  for (const auto& [k, v] : kwargs) {
+    const std::string key = k.cast<std::string>();
+    if (v.is_none()) continue;
+    auto number = [&] { return keyword<double>(function, key, v); };
+    auto integer = [&] { return keyword<int>(function, key, v); };
+    auto text = [&] { return keyword<std::string>(function, key, v); };
+    if (key == "method") o.method = text();
+    else if (key == "step") o.step = number();
+    else if (key == "tolerance") o.tolerance = number();
+    else if (key == "table_size") o.table_size = integer();
+    else if (key == "iterations") o.iterations = integer();
+    else if (key == "width") o.width = integer();
+    else if (key == "height") o.height = integer();
+    else if (key == "termination") o.termination = number();
+    else if (key == "skip_empty") o.skip_empty = keyword<bool>(function, key, v);
+    else if (key == "double") o.float_math = !*keyword<bool>(function, key, v);
+    else if (key == "h0") o.h0 = number();
+    else if (key == "hmin") o.hmin = number();
+    else if (key == "hmax") o.hmax = number();
+    else if (key == "strategy") o.strategy = text();
+    else if (key == "max_samples") o.max_samples = number();
+    else if (key == "max_work") o.max_work = number();
+    else if (key == "threads") r.threads = *integer();
+    else throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + key + "'");
+  }
+  checked_threads(r.threads);
+  return r;
+}
+
+// The scene with the overrides applied (a copy; the samples are shared).
+Scene scene_for(const py::handle& scene, const RenderRequest& request) {
+  Scene copy = *scene_of(scene);
+  apply_overrides(copy, request.overrides);
+  return copy;
+}
+
+void warn(const std::string& message) {
+  if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 2) != 0) throw py::error_already_set();
+}
+
+py::array_t<float> render(const py::object& scene_object, const py::kwargs& kwargs) {
+  const RenderRequest request = request_of("render", kwargs);
+  const Scene scene = scene_for(scene_object, request);
+  Image image;
+  std::optional<std::string> transparent;
+  {
+    py::gil_scoped_release release;
+    const SceneRenderer renderer(scene);
+    image = renderer.render({.threads = request.threads});
+    transparent = transparency_cause(image, scene, renderer.camera());
+  }
+  if (transparent) warn("vri: every pixel is transparent: " + *transparent);
+  return to_numpy(std::move(image));
+}
+
+py::array_t<float> error_estimate(const py::object& scene_object, const py::kwargs& kwargs) {
+  const RenderRequest request = request_of("error_estimate", kwargs);
+  const Scene scene = scene_for(scene_object, request);
+  Image estimate;
+  {
+    py::gil_scoped_release release;
+    estimate = SceneRenderer(scene).render_error_estimate({.threads = request.threads});
+  }
+  return to_numpy(std::move(estimate));
+}
+
+py::dict trace(const py::object& scene_object, std::array<int, 2> pixel, const py::kwargs& kwargs) {
+  const RenderRequest request = request_of("trace", kwargs);
+  const Scene scene = scene_for(scene_object, request);
+  RayStats stats;
+  stats.record_steps = true;
+  {
+    py::gil_scoped_release release;
+    const SceneRenderer renderer(scene);
+    const ErrorEstimatingIntegrator& integrator = renderer.error_estimating("vri.trace");
+    const Camera& camera = renderer.camera();
+    const auto [px, py] = pixel;
+    if (px < 0 || py < 0 || px >= camera.width() || py >= camera.height())
+      throw Error("vri.trace: pixel (" + std::to_string(px) + ", " + std::to_string(py) + ") lies outside the image");
+    integrator.integrate(camera.ray(px, py), stats);
+  }
+  const double unit = scene.grid().voxel_unit();
+  const std::size_t n = stats.steps.size();
+  py::array_t<bool> outer(n);
+  py::array_t<double> t(n), h(n), alpha(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const AdaptiveStep& s = stats.steps[i];
+    outer.mutable_at(i) = s.outer;
+    t.mutable_at(i) = s.t / unit;
+    h.mutable_at(i) = s.h / unit;
+    alpha.mutable_at(i) = s.alpha;
+  }
+  py::dict out;
+  out["outer"] = outer;
+  out["t"] = t;
+  out["h"] = h;
+  out["alpha"] = alpha;
+  return out;
+}
+
+const char* kKeywords =
+    "Keyword arguments override the scene as the `vri render` flags do (None keeps the scene's):\n"
+    "method, step, tolerance, table_size, iterations, width, height, threads (0: all cores),\n"
+    "termination, skip_empty (False: --no-skip), double (True: --double), h0, hmin, hmax,\n"
+    "strategy, max_samples, max_work. Raises ValueError with the CLI's message for bad values.";
+
+}  // namespace
+
+py::array_t<float> to_numpy(Image image) {
+  const auto h = static_cast<std::size_t>(image.height()), w = static_cast<std::size_t>(image.width());
+  auto* data = new std::vector<float>(std::move(image.data()));
+  const py::capsule owner(data, [](void* p) { delete static_cast<std::vector<float>*>(p); });
+  return py::array_t<float>({h, w, std::size_t{4}}, data->data(), owner);
+}
+
+void bind_rendering(py::module_& m) {
+  m.def("render", &render, py::arg("scene"),
+        (std::string("Renders a scene (a vri.Scene, a dict of SPEC §8 keys or a scene file path) and\n"
+                     "returns float32 (H, W, 4): premultiplied RGBA before the background, row 0 at the\n"
+                     "top - the same bytes as `vri render SCENE -o OUT.npy` with the same settings. The\n"
+                     "GIL is released while rendering. Warns (RuntimeWarning) when every pixel is transparent.\n\n") +
+         kKeywords).c_str());
+  m.def("error_estimate", &error_estimate, py::arg("scene"),
+        (std::string("The per-pixel error estimate of method 'adaptive' (`vri render --error-estimate`):\n"
+                     "float32 (H, W, 4), each channel the sum of the ray's accepted error terms.\n\n") +
+         kKeywords).c_str());
+  m.def("trace", &trace, py::arg("scene"), py::arg("pixel"),
+        (std::string("The steps method 'adaptive' accepts along the ray of pixel (x, y) (`vri render\n"
+                     "--trace`): a dict of arrays 'outer' (bool: outer or inner integral), 't', 'h' (voxel\n"
+                     "units) and 'alpha'.\n\n") +
+         kKeywords).c_str());
+}
+
+}  // namespace vri::python

@@ -1,0 +1,83 @@
+#include "vri/render/scene_renderer.hpp"
+
+#include <optional>
+#include <variant>
+
+#include "vri/core/error.hpp"
+#include "vri/integrators/make_integrator.hpp"
+#include "vri/projected/projected_tetrahedra.hpp"
+#include "vri/render/error_estimate.hpp"
+#include "vri/render/render_checks.hpp"
+
+namespace vri {
+
+struct SceneRenderer::Projected {
+  std::unique_ptr<SlabTable> table;
+  std::unique_ptr<WeightedLengthTables> weighted;  // lighting mode interpolated
+  std::optional<CylindricalTable> cylinder;        // pt-cylindrical
+  std::optional<WeightedCylindricalTables> weighted_cylinder;
+};
+
+namespace {
+
+const Scene& checked(const Scene& scene) {
+  check_method_parameters(scene.method);
+  return scene;
+}
+
+}  // namespace
+
+SceneRenderer::SceneRenderer(const Scene& scene) : scene_(checked(scene)), camera_(scene.camera) {
+  check_work(scene, camera_);  // before any table is built
+  const MethodSpec& m = scene.method;
+  if (m.name != "pt" && m.name != "pt-cylindrical") {
+    integrator_ = std::visit(
+        [&](const auto& volume) { return make_integrator(m, volume, scene.transfer_function, scene.lighting); },
+        scene.volume);
+    return;
+  }
+  if (m.fast.termination != 0)
+    throw Error(m.name + ": early ray termination is not supported yet; it works in riemann, preint1 and preint2");
+  projected_ = std::make_unique<Projected>();
+  Projected& p = *projected_;
+  p.table = make_slab_table(m, scene.mesh(), scene.transfer_function);
+  p.weighted = make_weighted_length_tables(m, scene.mesh(), scene.transfer_function, scene.lighting);
+  if (m.name == "pt-cylindrical") {
+    const int size = m.table_size, planes = m.planes > 0 ? m.planes : size;
+    p.cylinder.emplace(*p.table, scene.transfer_function, size, planes);
+    if (p.weighted)
+      p.weighted_cylinder.emplace(CylindricalTable(p.weighted->front, scene.transfer_function, size, planes),
+                                  CylindricalTable(p.weighted->back, scene.transfer_function, size, planes));
+  }
+}
+
+SceneRenderer::~SceneRenderer() = default;
+
+std::string SceneRenderer::method_name() const {
+  return integrator_ ? std::string(integrator_->name()) : scene_.method.name;
+}
+
+Image SceneRenderer::render(const RenderOptions& options) const {
+  const Projected* p = projected_.get();
+  const Image image =
+      !p            ? vri::render(camera_, *integrator_, options)
+      : p->cylinder ? render_projected(camera_, scene_.mesh(), *p->cylinder, options, scene_.lighting,
+                                       p->weighted_cylinder ? &*p->weighted_cylinder : nullptr)
+                    : render_projected(camera_, scene_.mesh(), *p->table, options, scene_.lighting, p->weighted.get());
+  refuse_non_finite(image, "the rendered image");
+  return image;
+}
+
+const ErrorEstimatingIntegrator& SceneRenderer::error_estimating(const std::string& what) const {
+  const auto* e = dynamic_cast<const ErrorEstimatingIntegrator*>(integrator_.get());
+  if (!e) throw Error(what + " needs method 'adaptive', not '" + scene_.method.name + "'");
+  return *e;
+}
+
+Image SceneRenderer::render_error_estimate(const RenderOptions& options) const {
+  const Image estimate = vri::render_error_estimate(camera_, error_estimating("the error estimate"), options);
+  refuse_non_finite(estimate, "the error estimate");
+  return estimate;
+}
+
+}  // namespace vri

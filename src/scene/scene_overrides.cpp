@@ -1,0 +1,31 @@
+#include "vri/scene/scene_overrides.hpp"
+
+namespace vri {
+
+void apply_overrides(Scene& scene, const SceneOverrides& o) {
+  MethodSpec& m = scene.method;
+  if (o.method && *o.method != m.name) {
+    m.name = *o.method;
+    m.table_size_given = false;
+  }
+  if (o.table_size) {
+    m.table_size = *o.table_size;
+    m.table_size_given = true;
+  }
+  if (o.step) m.step = *o.step;
+  if (o.tolerance) m.tolerance = *o.tolerance;
+  if (o.iterations) m.iterations = *o.iterations;
+  if (o.width) scene.camera.width = *o.width;
+  if (o.height) scene.camera.height = *o.height;
+  if (o.h0) m.h0 = *o.h0;
+  if (o.hmin) m.hmin = *o.hmin;
+  if (o.hmax) m.hmax = *o.hmax;
+  if (o.strategy) m.strategy = *o.strategy;
+  if (o.termination) m.fast.termination = *o.termination;
+  if (o.skip_empty) m.fast.skip_empty = *o.skip_empty;
+  if (o.float_math) m.fast.float_math = *o.float_math;
+  if (o.max_samples) m.max_samples = *o.max_samples;
+  if (o.max_work) m.max_work = *o.max_work;
+}
+
+}  // namespace vri
