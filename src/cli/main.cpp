@@ -11,10 +11,13 @@
 #include "vri/core/error.hpp"
 #include "vri/core/memory_limit.hpp"
 #include "vri/io/output_transaction.hpp"
+#include "vri/version.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"vri: volume rendering with measurable accuracy"};
   app.require_subcommand(1);
+  // Prints "vri 0.2.0" and exits 0 (before the subcommand is required).
+  app.set_version_flag("--version", std::string("vri ") + vri::kVersion, "Print the version and exit");
   vri::cli::Runner render = vri::cli::add_render_command(app);
   vri::cli::Runner compare = vri::cli::add_compare_command(app);
   vri::cli::Runner table = vri::cli::add_table_command(app);
