@@ -18,25 +18,37 @@ Scene scene_with(const std::string& method) {
 TEST(SceneOverrides, AnotherMethodDropsTheScenesTableSize) {
   Scene s = scene_with(R"({"name": "preint1", "table_size": 1024})");
   ASSERT_TRUE(s.method.table_size_given);
-  apply_overrides(s, {.method = "preint2-dual"});
+  SceneOverrides o;
+  o.method = "preint2-dual";
+  apply_overrides(s, o);
   EXPECT_EQ(s.method.name, "preint2-dual");
   EXPECT_FALSE(s.method.table_size_given);  // preint2-dual keeps its own default
 }
 
 TEST(SceneOverrides, TheSameMethodOrAGivenSizeKeepsIt) {
   Scene same = scene_with(R"({"name": "preint1", "table_size": 1024})");
-  apply_overrides(same, {.method = "preint1"});
+  SceneOverrides o;
+  o.method = "preint1";
+  apply_overrides(same, o);
   EXPECT_TRUE(same.method.table_size_given);
   Scene given = scene_with(R"({"name": "preint1"})");
-  apply_overrides(given, {.method = "preint2-dual", .table_size = 32});
+  o.method = "preint2-dual";
+  o.table_size = 32;
+  apply_overrides(given, o);
   EXPECT_TRUE(given.method.table_size_given);
   EXPECT_EQ(given.method.table_size, 32);
 }
 
 TEST(SceneOverrides, SetsEveryGivenFieldAndNoOther) {
   Scene s = scene_with(R"({"name": "riemann", "step": 0.5})");
-  apply_overrides(s, {.strategy = "guaranteed", .step = 2, .hmin = 0.01, .width = 17, .skip_empty = false,
-                      .float_math = false});
+  SceneOverrides o;
+  o.strategy = "guaranteed";
+  o.step = 2;
+  o.hmin = 0.01;
+  o.width = 17;
+  o.skip_empty = false;
+  o.float_math = false;
+  apply_overrides(s, o);
   EXPECT_EQ(s.method.strategy, "guaranteed");
   EXPECT_DOUBLE_EQ(s.method.step, 2);
   EXPECT_DOUBLE_EQ(s.method.hmin, 0.01);
