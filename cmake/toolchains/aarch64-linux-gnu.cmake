@@ -9,5 +9,8 @@ set(CMAKE_CXX_COMPILER aarch64-linux-gnu-g++)
 # /usr/lib/aarch64-linux-gnu, header-only packages in /usr/share.
 set(CMAKE_LIBRARY_ARCHITECTURE aarch64-linux-gnu)
 # try_run, gtest_discover_tests and ctest run target programs through this.
-# -L: the arm64 loader and libc of the cross toolchain.
-set(CMAKE_CROSSCOMPILING_EMULATOR qemu-aarch64 -L /usr/aarch64-linux-gnu)
+# -L /: the arm64 loader and libc of Debian multiarch (libc6:arm64, which the
+# :arm64 dev packages pull in), beside the arm64 libraries the build links.
+# Not the cross toolchain's copy in /usr/aarch64-linux-gnu: with it, the
+# first thread a program starts hangs (qemu 7.2, glibc 2.36).
+set(CMAKE_CROSSCOMPILING_EMULATOR qemu-aarch64 -L /)
