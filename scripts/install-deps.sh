@@ -4,6 +4,7 @@
 set -euo pipefail
 pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1g-dev
       libtbb-dev libgtest-dev libbenchmark-dev python3 python3-numpy
+      ccache  # scripts/test.sh: the VRI_SIMD=OFF build reuses the Release build's objects
       clang libclang-rt-14-dev  # clang + libFuzzer: the fuzz step (scripts/fuzz.sh)
       # the Python module (python/), its tests, examples/ and its notebook
       python3-dev pybind11-dev python3-pybind11 python3-pytest python3-matplotlib

@@ -1,13 +1,22 @@
 #!/usr/bin/env bash
 # Every test on a fresh machine: install dependencies, build and run the
-# suite twice - a normal Release build, then AddressSanitizer + UBSan - then
-# run every parser's libFuzzer harness for a bounded time (FUZZ_SECONDS, 10 s each).
+# suite three times - a normal Release build, the same with the x86-64 SIMD
+# code off (VRI_SIMD=OFF, docs/PORTABILITY.md), then AddressSanitizer + UBSan -
+# then run every parser's libFuzzer harness for a bounded time (FUZZ_SECONDS, 10 s each).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 jobs=$(nproc)
-bash scripts/build.sh build -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=ON
+# ccache lets the VRI_SIMD=OFF build reuse the Release build's objects: only
+# the files that include src/core/simd.hpp compile again.
+# Paths under the checkout are hashed relative to it, so build and
+# build-nosimd (each with its own generated include/) share entries.
+launcher=()
+if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); export CCACHE_BASEDIR="$PWD"; fi
+bash scripts/build.sh build "${launcher[@]}" -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=ON
 (cd build && ctest --output-on-failure -j "$jobs")
+bash scripts/build.sh build-nosimd "${launcher[@]}" -DVRI_SIMD=OFF -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=OFF
+(cd build-nosimd && ctest --output-on-failure -j "$jobs")
 bash scripts/build.sh build-asan -DVRI_SANITIZE=ON -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j "$jobs")
 bash scripts/fuzz.sh "${FUZZ_SECONDS:-10}" build-fuzz

@@ -1,5 +1,9 @@
 #include "float_packet.hpp"
 
+#include "core/simd.hpp"
+// The AVX2 packets, compiled where simd.hpp allows them (x86-64 with
+// VRI_SIMD); float_packet_scalar.cpp is the build without.
+#if VRI_HAVE_AVX2_PACKETS
 #include <immintrin.h>
 
 #include <algorithm>
@@ -14,8 +18,10 @@
 
 namespace vri::detail {
 
+bool packets_available() { return __builtin_cpu_supports("avx2"); }
+
 bool packets_fit(const GridVolume& volume) {
-  return __builtin_cpu_supports("avx2") && volume.size() <= static_cast<std::size_t>(INT_MAX);
+  return packets_available() && volume.size() <= static_cast<std::size_t>(INT_MAX);
 }
 
 namespace {
@@ -669,3 +675,4 @@ void march_riemann_packet(const GridVolume& volume, const FloatSampler& sampler,
 }
 
 }  // namespace vri::detail
+#endif  // VRI_HAVE_AVX2_PACKETS

@@ -6,7 +6,8 @@
 // slab; per slab the 8 lanes' new samples are interpolated, placed on the
 // table axis, looked up and composited as 8-lane vectors with the operations
 // of march_float (float_march.hpp) in the same order, and no FMA (the kernel
-// is compiled for AVX2 alone): the same bytes, ray by ray.
+// is compiled for AVX2 alone): the same bytes, ray by ray. Only on x86-64
+// with VRI_SIMD (src/core/simd.hpp; float_packet_scalar.cpp otherwise).
 #include "float_march.hpp"
 #include "float_shading.hpp"
 #include "ray_steps.hpp"
@@ -23,8 +24,11 @@ namespace vri::detail {
 
 inline constexpr int kPacket = 8;
 
-// True where the CPU has AVX2 and the volume's offsets fit 32-bit lanes;
-// else the rays are marched one by one.
+// True where the build has the AVX2 packets (src/core/simd.hpp) and the CPU
+// has AVX2; else every march_*_packet is the scalar march, ray by ray.
+bool packets_available();
+// packets_available() and the volume's offsets fit 32-bit lanes; else the
+// integrators march the rays one by one.
 bool packets_fit(const GridVolume& volume);
 
 // out[i] = march_float(..., table, ..., rays[i], ...) for i < kPacket.

@@ -13,7 +13,7 @@ HalfSecondOrderTable::HalfSecondOrderTable(const SecondOrderTable& table)
       data_(table.bytes() / sizeof(float)) {
   const float* src = table.data();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, data_.size()), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i < r.end(); ++i) data_[i] = static_cast<_Float16>(src[i]);
+    for (std::size_t i = r.begin(); i < r.end(); ++i) data_[i] = static_cast<Half>(src[i]);
   });
 }
 

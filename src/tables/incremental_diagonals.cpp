@@ -15,6 +15,7 @@
 #include <cstring>
 #include <span>
 
+#include "core/simd.hpp"
 #include "vri/tables/slab_integral.hpp"
 
 namespace vri {
@@ -47,8 +48,8 @@ VRI_INLINE V4 over(const V4& front, const V4& back) {
 
 // The series (piece_weights.hpp) four pieces at a time, then the pieces too
 // thick for it again by quadrature: thick_piece_weights.
-__attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void diagonal_weights(const Pieces& pieces, double d,
-                                                                                DiagonalSweep::Weights& w) {
+VRI_TARGET_CLONES __attribute__((flatten)) void diagonal_weights(const Pieces& pieces, double d,
+                                                                 DiagonalSweep::Weights& w) {
   const int count = pieces.size() - 1;
   const double* tau = pieces.tau.data();
   // Local pointers: the stores below cannot change them, so they stay in registers.
@@ -136,13 +137,13 @@ VRI_INLINE void composite_diagonal(const TfSample* c, int m, const DiagonalSweep
   }
 }
 
-__attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void composite_doubles(
+VRI_TARGET_CLONES __attribute__((flatten)) void composite_doubles(
     const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s,
     const DiagonalSweep::SplitBins& split, SlabRgba* upper, SlabRgba* lower) {
   composite_diagonal(c, m, w, s, split, upper, lower, 1);
 }
 
-__attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void composite_floats(
+VRI_TARGET_CLONES __attribute__((flatten)) void composite_floats(
     const TfSample* c, int m, const DiagonalSweep::Weights& w, DiagonalSweep::Subranges& s,
     const DiagonalSweep::SplitBins& split, float* upper, float* lower, std::ptrdiff_t stride) {
   composite_diagonal(c, m, w, s, split, upper, lower, stride);

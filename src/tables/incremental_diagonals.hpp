@@ -48,9 +48,10 @@ struct Pieces {
 using Entry = std::array<float, 4>;
 
 // Scratch of one thread, fully overwritten by each weights() / composite(),
-// so results do not depend on which thread ran what. The loops are compiled
-// twice (AVX2 + FMA and the x86-64 baseline, target_clones) and picked at
-// run time: one machine always runs the same code, whatever the thread count.
+// so results do not depend on which thread ran what. On x86-64 with VRI_SIMD
+// the loops are compiled twice (AVX2 + FMA and the x86-64 baseline,
+// target_clones, src/core/simd.hpp) and picked at run time: one machine
+// always runs the same code, whatever the thread count.
 class DiagonalSweep {
  public:
   explicit DiagonalSweep(int n);

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <vector>
 
+#include "core/simd.hpp"
 #include "vri/tables/table_builder.hpp"
 
 namespace vri {
@@ -142,14 +143,13 @@ __attribute__((always_inline)) inline void composite_lanes_impl(const PaddedTf& 
   }
 }
 
-__attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void composite_lanes(const PaddedTf& tf,
-                                                                               const int* index,
-                                                                               const float* weight,
-                                                                               int iterations, LaneResults& out) {
+VRI_TARGET_CLONES __attribute__((flatten)) void composite_lanes(const PaddedTf& tf, const int* index,
+                                                                const float* weight, int iterations,
+                                                                LaneResults& out) {
   composite_lanes_impl<false>(tf, index, weight, nullptr, iterations, out);
 }
 
-__attribute__((target_clones("arch=x86-64-v3", "default"), flatten)) void composite_lanes_weighted(
+VRI_TARGET_CLONES __attribute__((flatten)) void composite_lanes_weighted(
     const PaddedTf& tf, const int* index, const float* weight, const SubstepWeights& lagrange, int iterations,
     LaneResults& out) {
   composite_lanes_impl<true>(tf, index, weight, &lagrange, iterations, out);

@@ -15,6 +15,7 @@
 #include <typeinfo>
 #include <vector>
 
+#include "integrators/float_packet.hpp"
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
 #include "vri/integrators/make_integrator.hpp"
@@ -213,9 +214,12 @@ TEST(FastPath, FloatPathIsWithin1e4OfTheDoublePath) {
 
 // The packets of 8 rays of riemann, preint1 and preint2 (float_packet.hpp; render
 // hands each tile row to integrate_row) against integrate, ray by ray: the
-// same bytes, with skipping, with and without termination (on a CPU without
-// AVX2 both are the scalar march).
+// same bytes, with skipping, with and without termination. Skipped where
+// there are no packets (both would be the scalar march): a build with
+// VRI_SIMD off or for another target than x86-64, or a CPU without AVX2.
 TEST(FastPath, PacketsGiveTheBytesOfTheScalarFloatPath) {
+  if (!detail::packets_available())
+    GTEST_SKIP() << "no AVX2 ray packets in this build or on this CPU (src/core/simd.hpp)";
   for (const char* file : {"scenes/neghip.json", "scenes/engine.json", "scenes/bonsai.json"}) {
     const Scene scene = small(file, 32);
     const Camera camera(scene.camera);

@@ -3,7 +3,7 @@
 // docs/PERFORMANCE.md): the continuous index is (s - s_lo) * scale with the
 // scale precomputed (no division), clamped as ScalarAxis::index, and the four
 // entries are blended as 4-float vectors (GCC vector extension; SSE2 on
-// x86-64). An all-zero neighbourhood gives exactly zero, as the double lookup.
+// x86-64, NEON on aarch64). An all-zero neighbourhood gives exactly zero, as the double lookup.
 #include <algorithm>
 #include <array>
 #include <cstring>

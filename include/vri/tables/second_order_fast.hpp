@@ -8,8 +8,9 @@
 // transfer function at the same sub-step offsets q(t_k), shifted by the
 // integer f: the interpolation weights frac(q(t_k)) are shared, and the
 // entries f, f+1, ..., f+7 read 8 consecutive table scalars. Eight entries go
-// through the K sub-steps together in one SIMD primitive (8 float lanes;
-// AVX2 where the CPU has it, by target_clones), with exp evaluated by a
+// through the K sub-steps together in one SIMD primitive (8 float lanes, GCC
+// generic vectors; on x86-64 with VRI_SIMD also an AVX2 clone picked where the
+// CPU has it, src/core/simd.hpp), with exp evaluated by a
 // polynomial. Clamping to the axis is a padding of the per-scalar arrays
 // with their end values (a parabola through three values in [0, N-1] stays
 // within [-(N-1)/8, 9(N-1)/8]).
