@@ -225,6 +225,8 @@ TransferFunction transfer_function_from(const json& j, const Reader& r, bool may
 GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r) {
   r.object(j);
   r.known(j, kVolumeKeys);
+  for (const char* key : {"grid", "tets_per_cell"})
+    if (j.contains(key)) throw Error(r.where(key) + ": applies to tetrahedralized volumes only");
   std::optional<GridVolume> vol;
   if (j.contains("builtin")) {
     const std::string name = r.string(j, "builtin");

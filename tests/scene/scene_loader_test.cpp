@@ -88,6 +88,8 @@ TEST(SceneLoader, RefusesBadScenesWithOneClearLine) {
   // A file's keys on a builtin volume (found by fuzz_scene: it tetrahedralized a 64^3 sphere, ignoring "file").
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "sphere", "file": [1, 4, 4]}})",
                  "volume.file: applies to volume files, not to builtin volumes");
+  expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"builtin": "sphere", "grid": [91, 8, 4]}})",
+                 "volume.grid: applies to tetrahedralized volumes only");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "../data/bucky_32x32x32_uint8.raw", "dims": [32, 32, 31]}})",
                  "bytes");
   expect_refused("{" + tf + ", " + kCamera + R"(, "volume": {"file": "../data/bucky_32x32x32_uint8.raw", "dims": [32, 32, 32], "type": "complex"}})",
