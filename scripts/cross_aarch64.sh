@@ -24,7 +24,7 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 start=$SECONDS
 cmake -S . -B "$dir" -DCMAKE_TOOLCHAIN_FILE=cmake/toolchains/aarch64-linux-gnu.cmake -DCMAKE_BUILD_TYPE=Release \
-      -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=OFF "$@" >/dev/null
+      -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=OFF -DVRI_PYTHON=OFF "$@" >/dev/null  # no arm64 python3-dev here
 cmake --build "$dir" -j "$(nproc)"
 echo "cross_aarch64: built in $((SECONDS - start)) s"
 start=$SECONDS
