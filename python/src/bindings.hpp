@@ -21,7 +21,7 @@ void bind_analysis(py::module_& m);   // table, compare, ray, memory budget
 
 // A scene from what Python passes: a Scene, a dict of SPEC §8 keys (its
 // "volume" may be a Volume or a Mesh) or the path of a scene file.
-std::shared_ptr<const Scene> scene_of(const py::handle& object);
+std::shared_ptr<Scene> scene_of(const py::handle& object);
 
 // A transfer function from a dict ({"points": ...}), a path or a Scene.
 TransferFunction transfer_function_of(const py::handle& object);

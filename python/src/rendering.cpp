@@ -68,9 +68,10 @@ RenderRequest request_of(const char* function, const py::kwargs& kwargs) {
   return r;
 }
 
-// The scene with the overrides applied (a copy; the samples are shared).
+// The scene with the overrides applied: a vri.Scene is copied (its samples
+// shared), a path or a dict is loaded straight into the value.
 Scene scene_for(const py::handle& scene, const RenderRequest& request) {
-  Scene copy = *scene_of(scene);
+  Scene copy = py::isinstance<Scene>(scene) ? Scene(scene.cast<const Scene&>()) : Scene(std::move(*scene_of(scene)));
   apply_overrides(copy, request.overrides);
   return copy;
 }

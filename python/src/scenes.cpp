@@ -58,7 +58,7 @@ py::list points_of(const TransferFunction& tf) {
 
 }  // namespace
 
-std::shared_ptr<const Scene> scene_of(const py::handle& o) {
+std::shared_ptr<Scene> scene_of(const py::handle& o) {
   if (py::isinstance<Scene>(o)) return o.cast<std::shared_ptr<Scene>>();
   if (py::isinstance<py::dict>(o)) return scene_from_dict(o.cast<py::dict>(), std::nullopt);
   if (is_path(o)) return std::make_shared<Scene>(load_scene(o.cast<fs::path>()));

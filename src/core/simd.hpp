@@ -3,8 +3,10 @@
 // VRI_SIMD is the CMake option (ON by default, the compile definition 1);
 // OFF, or a target other than x86-64, leaves the portable code alone: the
 // scalar ray marches and the tables' GCC generic vectors compiled for the
-// target's baseline. Every path gives the same bytes (no FMA contraction:
-// -std=c++20 without GNU extensions keeps -ffp-contract=off).
+// target's baseline. The ray marches give the same bytes on every path; the
+// x86-64-v3 table clones may round differently (GCC contracts a * b + c into
+// FMA there), and other targets build with -ffp-contract=off (top-level
+// CMakeLists.txt, docs/PORTABILITY.md).
 
 #ifndef VRI_SIMD
 #define VRI_SIMD 1

@@ -86,6 +86,11 @@ struct Reader {
     if (!j.is_object()) throw Error(ctx() + ": expected a JSON object, found " + found(j));
     return j;
   }
+  // Known keys that do not apply here are errors too, saying `why`.
+  void refused(const json& j, std::initializer_list<const char*> keys, const std::string& why) const {
+    for (const char* key : keys)
+      if (j.contains(key)) throw Error(where(key) + ": " + why);
+  }
   // Unknown keys are errors (a typo would otherwise be ignored silently).
   void known(const json& j, std::initializer_list<std::string_view> keys) const {
     known(j, std::span<const std::string_view>(keys.begin(), keys.size()));
@@ -225,14 +230,13 @@ TransferFunction transfer_function_from(const json& j, const Reader& r, bool may
 GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r) {
   r.object(j);
   r.known(j, kVolumeKeys);
-  for (const char* key : {"grid", "tets_per_cell"})
-    if (j.contains(key)) throw Error(r.where(key) + ": applies to tetrahedralized volumes only");
+  r.refused(j, {"grid", "tets_per_cell"}, "applies to tetrahedralized volumes only");
   std::optional<GridVolume> vol;
   if (j.contains("builtin")) {
     const std::string name = r.string(j, "builtin");
     // Keys of volume files mean nothing here: refused, not ignored.
-    for (const char* key : {"file", "type", "endian", "allow_outside_paths", "scalars"})
-      if (j.contains(key)) throw Error(r.where(key) + ": applies to volume files, not to builtin volumes");
+    r.refused(j, {"file", "type", "endian", "allow_outside_paths", "scalars"},
+              "applies to volume files, not to builtin volumes");
     auto dims_or = [&](std::array<int, 3> def) {
       if (!j.contains("dims")) return def;
       const auto d = r.dims(j, "dims");
@@ -284,8 +288,7 @@ Volume volume_from(const json& j, const fs::path& base, const Reader& top) {
   fs::path file = j.contains("file") && !j.contains("builtin") ? fs::path(r.string(j, "file")) : fs::path();
   const std::string ext = file.extension().string();
   if (!tetrahedralized && ext != ".vtk" && ext != ".vtu") return grid_volume_from(j, base, r);
-  for (const char* key : {"spacing", "origin", "dims"})
-    if (j.contains(key)) throw Error(r.where(key) + ": applies to grid volumes, not to meshes");
+  r.refused(j, {"spacing", "origin", "dims"}, "applies to grid volumes, not to meshes");
   if (tetrahedralized) {
     if (!j.contains("grid")) throw Error(r.ctx() + ": 'tetrahedralized' needs a 'grid' volume to split");
     const Reader g = r.child("grid");
