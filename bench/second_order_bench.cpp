@@ -38,7 +38,7 @@ BENCHMARK_CAPTURE(BM_SecondOrder, plain, "plain")
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SecondOrder, fast, "fast")
-    ->ArgsProduct({{64, 128, 256}, {64}, {1, 2}})
+    ->ArgsProduct({{64, 128, 256}, {8, 16, 64}, {1, 2}})
     ->Unit(benchmark::kMillisecond);
 
 void BM_SecondOrderWeighted(benchmark::State& state, const char* builder_name) {

@@ -115,7 +115,7 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--step", args->overrides.step, "Step size in voxel units");
   cmd->add_option("--tolerance", args->overrides.tolerance, "Error tolerance (exact, adaptive)");
   cmd->add_option("--table-size", args->overrides.table_size, "Pre-integration table size");
-  cmd->add_option("--iterations", args->overrides.iterations, "preint2*: parabola steps per table entry (1..4096)");
+  cmd->add_option("--iterations", args->overrides.iterations, "preint2*: parabola chords per table entry (1..4096; default 8)");
   cmd->add_option("--termination", args->overrides.termination,
                   "riemann, preint1, preint2: stop a ray once its transmittance is below this (0: off)");
   cmd->add_flag("--no-skip", args->no_skip,

@@ -47,7 +47,7 @@ Runner add_table_command(CLI::App& app) {
   cmd->add_option("--max-length", args->request.max_length, "Largest slab length LMAX (with --lengths)");
   cmd->add_option("--builder", args->request.builder,
                   "order 1: brute, incremental, sliced, engel or exact (default incremental); order 2: plain or fast (default)");
-  cmd->add_option("--iterations", args->request.iterations, "order 2: sub-steps per slab K, 1..4096 (default 64)");
+  cmd->add_option("--iterations", args->request.iterations, "order 2: chords per slab K, 1..4096 (default 8)");
   cmd->add_option("--steps", args->request.steps, "sliced: integration steps (default 2N)");
   cmd->add_option("--accumulation", args->request.accumulation, "sliced: 8bit, 12bit, fp16 or fp32 (default fp32)");
   cmd->add_option("-o,--output", args->output, "Output table (.npy)")->required();

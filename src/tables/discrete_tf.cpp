@@ -62,11 +62,6 @@ DiscreteTf::DiscreteTf(const TransferFunction& tf, int n) {
   sub_begin_[n - 1] = sub_begin_[n] = static_cast<int>(subs_.size());
 }
 
-TfSample DiscreteTf::between_samples(double u) const {
-  const int i = std::min(static_cast<int>(u), size() - 2);
-  return lerp(samples_[i], samples_[i + 1], u - i);
-}
-
 TfSample DiscreteTf::at_index(double u) const {
   const int i = std::min(static_cast<int>(u), size() - 2);
   const auto subs = sub_pieces(i);

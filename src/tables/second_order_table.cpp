@@ -6,7 +6,7 @@
 #include <cmath>
 #include <optional>
 
-#include "tables/second_order_substeps.hpp"
+#include "tables/second_order_chords.hpp"
 #include "tables/trilinear.hpp"
 #include "vri/core/error.hpp"
 #include "vri/tables/second_order_fast.hpp"
@@ -38,8 +38,10 @@ Rgba SecondOrderTable::lookup(double s_f, double s_m, double s_b) const {
 SlabRgba second_order_entry(const DiscreteTf& tf, double u_f, double u_m, double u_b, double length,
                             int iterations) {
   SlabRgba acc;
-  detail::for_each_second_order_substep(tf, u_f, u_m, u_b, length, iterations,
-                                        [&](double, const SlabRgba& v) { acc = over(acc, v); });
+  detail::for_each_second_order_chord(tf, u_f, u_m, u_b, length, iterations,
+                                      [&](double, double, double u0, double u1, double step) {
+                                        acc = over(acc, exact_index_slab(tf, u0, u1, step));
+                                      });
   return acc;
 }
 

@@ -3,7 +3,8 @@
 #include <utility>
 #include <vector>
 
-#include "tables/second_order_substeps.hpp"
+#include "tables/second_order_chords.hpp"
+#include "vri/tables/weighted_tables.hpp"
 
 namespace vri {
 
@@ -11,16 +12,25 @@ SecondOrderWeights second_order_weighted_entry(const DiscreteTf& tf, double u_f,
                                                double length, int iterations) {
   SecondOrderWeights out;
   double T = 1;
-  detail::for_each_second_order_substep(tf, u_f, u_m, u_b, length, iterations, [&](double t, const SlabRgba& v) {
-    const auto add = [&](SlabRgba& to, double w) {
-      to.r += w * T * v.r, to.g += w * T * v.g, to.b += w * T * v.b, to.a += w * T * v.a;
-    };
-    add(out.front, lagrange_front(t));
-    add(out.middle, lagrange_middle(t));
-    add(out.back, lagrange_back(t));
-    out.full = over(out.full, v);
-    T *= 1 - v.a;
-  });
+  const auto forward = [](const TfSample& p, const TfSample& q, double d) { return linear_piece(p, q, d).forward; };
+  detail::for_each_second_order_chord(
+      tf, u_f, u_m, u_b, length, iterations, [&](double t0, double t1, double u0, double u1, double step) {
+        // The chord's integrals weighted by its own front and back weight
+        // (rgb = D, a = S); a Lagrange weight, linear across the chord,
+        // is L(t0) at its front and L(t1) at its back.
+        const SlabWeights w = weighted_slab(tf, u0, u1, step, forward);
+        const auto add = [&](SlabRgba& to, double (*L)(double)) {
+          const double a = T * L(t0), b = T * L(t1);
+          to.r += a * w.front.r + b * w.back.r, to.g += a * w.front.g + b * w.back.g;
+          to.b += a * w.front.b + b * w.back.b, to.a += a * w.front.a + b * w.back.a;
+        };
+        add(out.front, lagrange_front);
+        add(out.middle, lagrange_middle);
+        add(out.back, lagrange_back);
+        const SlabRgba v = exact_index_slab(tf, u0, u1, step);
+        out.full = over(out.full, v);
+        T *= 1 - v.a;
+      });
   return out;
 }
 

@@ -27,7 +27,11 @@ PiecePair linear_piece(const TfSample& p, const TfSample& q, double d) {
 }
 
 SlabRgba exact_slab(const DiscreteTf& tf, double s_f, double s_b, double length) {
-  return integrate_slab(tf, tf.axis().index(s_f), tf.axis().index(s_b), length,
+  return exact_index_slab(tf, tf.axis().index(s_f), tf.axis().index(s_b), length);
+}
+
+SlabRgba exact_index_slab(const DiscreteTf& tf, double u_f, double u_b, double length) {
+  return integrate_slab(tf, u_f, u_b, length,
                         [](const TfSample& p, const TfSample& q, double d) { return linear_piece(p, q, d).forward; });
 }
 

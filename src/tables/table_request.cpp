@@ -21,7 +21,7 @@ BuiltTable second_order(const TransferFunction& tf, const TableRequest& r) {
   const DiscreteTf discrete(tf, r.size);
   const auto builder = make_second_order_builder(r.builder.value_or("fast"));
   const auto start = std::chrono::steady_clock::now();
-  auto table = std::make_shared<const SecondOrderTable>(builder->build(discrete, r.length, r.iterations.value_or(64)));
+  auto table = std::make_shared<const SecondOrderTable>(builder->build(discrete, r.length, r.iterations.value_or(kDefaultSecondOrderIterations)));
   const double seconds = seconds_since(start);
   const std::size_t n = r.size;
   return {{n, n, n, 4}, {table->data(), table->bytes() / sizeof(float)}, table, std::string(builder->name()), seconds};

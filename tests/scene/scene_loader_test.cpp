@@ -31,7 +31,7 @@ TEST(SceneLoader, ReadsEveryKeyWithDefaults) {
   EXPECT_DOUBLE_EQ(s.method.step, 0.25);
   EXPECT_EQ(s.method.table_size, 128);
   EXPECT_TRUE(s.method.table_size_given);
-  EXPECT_EQ(s.method.iterations, 64);  // default
+  EXPECT_EQ(s.method.iterations, 8);  // default
 }
 
 TEST(SceneLoader, PathsAreRelativeToTheSceneFile) {

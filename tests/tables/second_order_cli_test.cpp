@@ -33,9 +33,9 @@ TEST(SecondOrderTableCommand, WritesTheSpecShapeAndTheBuildersEntries) {
     const SecondOrderTable t = make_second_order_builder(builder)->build(tf, 1.5, 9);
     for (std::size_t k = 0; k < a.data.size(); ++k) ASSERT_EQ(a.data[k], t.data()[k]) << builder;
   }
-  // The defaults: fast, 64 iterations, length 1.
+  // The defaults: fast, 8 chords, length 1.
   ASSERT_EQ(vri_table("--size 10 -o " + out.string(), dir), 0);
-  const SecondOrderTable t = make_second_order_builder("fast")->build(DiscreteTf(bonsai, 10), 1.0, 64);
+  const SecondOrderTable t = make_second_order_builder("fast")->build(DiscreteTf(bonsai, 10), 1.0, 8);
   const NpyArray a = read_npy(out);
   for (std::size_t k = 0; k < a.data.size(); ++k) ASSERT_EQ(a.data[k], t.data()[k]);
 }

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "tables/random_tf.hpp"
 #include "vri/core/error.hpp"
@@ -14,30 +16,13 @@
 namespace vri {
 namespace {
 
-// The discretised transfer function at continuous index u, by hand.
-TfSample lerp_tf(const DiscreteTf& tf, double u) {
-  u = std::clamp(u, 0.0, tf.size() - 1.0);
-  const int i = std::min(static_cast<int>(u), tf.size() - 2);
-  const double w = u - i;
-  const TfSample &a = tf[i], &b = tf[i + 1];
-  return {a.r + w * (b.r - a.r), a.g + w * (b.g - a.g), a.b + w * (b.b - a.b), a.tau + w * (b.tau - a.tau)};
-}
+// The discretised transfer function at continuous index u (control points
+// inside a bin included), clamped to the axis.
+TfSample tf_at(const DiscreteTf& tf, double u) { return tf.at_index(std::clamp(u, 0.0, tf.size() - 1.0)); }
 
 // The parabola in Lagrange form through (0, f), (1/2, m), (1, b).
 double parabola(double f, double m, double b, double t) {
   return f * (2 * t - 1) * (t - 1) - 4 * m * t * (t - 1) + b * t * (2 * t - 1);
-}
-
-// The model written as sums: C = sum_k c_k (1 - e^-d_k) e^-D_k, D_k = sum_{j<k} d_j.
-SlabRgba model_as_sums(const DiscreteTf& tf, double f, double m, double b, double length, int k_max) {
-  long double depth = 0, c[3] = {0, 0, 0};
-  for (int k = 0; k < k_max; ++k) {
-    const TfSample s = lerp_tf(tf, parabola(f, m, b, (k + 0.5) / k_max));
-    const long double d = s.tau * length / k_max, w = std::exp(-depth) * -std::expm1(-d);
-    c[0] += w * s.r, c[1] += w * s.g, c[2] += w * s.b;
-    depth += d;
-  }
-  return {double(c[0]), double(c[1]), double(c[2]), double(-std::expm1(-depth))};
 }
 
 // The integral of SPEC §4 along the continuous parabola (K -> infinity), by
@@ -46,7 +31,7 @@ SlabRgba continuous_integral(const DiscreteTf& tf, double f, double m, double b,
   const int panels = 1 << 18;
   const double h = 1.0 / panels;
   double depth = 0, c[3] = {0, 0, 0};
-  auto at = [&](int i) { return lerp_tf(tf, parabola(f, m, b, i * h)); };
+  auto at = [&](int i) { return tf_at(tf, parabola(f, m, b, i * h)); };
   TfSample prev = at(0);
   double prev_w = prev.tau * length;  // c tau e^-D at t = 0 without c
   for (int i = 1; i <= panels; ++i) {
@@ -78,16 +63,39 @@ TEST(SecondOrderEntry, ConstantParabolaIsTheHomogeneousSlab) {
     }
 }
 
-TEST(SecondOrderEntry, EqualsTheModelWrittenAsSums) {
+// A straight parabola (m halfway) is one linear ramp: its K chords are
+// consecutive pieces of one first-order slab, which "over" joins exactly.
+TEST(SecondOrderEntry, StraightParabolaIsTheFirstOrderSlab) {
   const DiscreteTf tf(test::random_spiky_tf(5, 6.0), 32);
   for (const double length : {0.3, 1.0, 4.0})
     for (const int k : {1, 3, 64})
-      for (int f = 0; f < 32; f += 5)
-        for (int m = 0; m < 32; m += 3)
-          for (int b = 0; b < 32; b += 7)
-            ASSERT_LE(max_abs(second_order_entry(tf, f, m, b, length, k), model_as_sums(tf, f, m, b, length, k)),
-                      1e-13)
-                << f << " " << m << " " << b;
+      for (const double f : {0.0, 3.5, 17.0, 31.0})
+        for (const double b : {0.0, 2.25, 20.0, 31.0})
+          ASSERT_LE(max_abs(second_order_entry(tf, f, (f + b) / 2, b, length, k), exact_index_slab(tf, f, b, length)),
+                    1e-12)
+              << f << " " << b << " K " << k;
+}
+
+// A spike narrower than a bin (the issue-16 case): every chord integrates the
+// control points it crosses, so entries whose parabola crosses the spike see
+// it whatever K, and agree with the integral along the continuous parabola.
+TEST(SecondOrderEntry, SeesASpikeNarrowerThanABin) {
+  const TransferFunction spike({{0, 0, 0, 0, 0},
+                                {100.2, 1, 0.5, 0.2, 0},
+                                {100.5, 1, 0.5, 0.2, 2},
+                                {100.8, 1, 0.5, 0.2, 0},
+                                {255, 0, 0, 0, 0}});
+  const DiscreteTf tf(spike, 256);  // bins one scalar unit wide: the spike lies inside bin 100
+  // Chords depart from the parabola by O(1/K^2); the old point samples of the
+  // table scalars gave alpha 0 for all three.
+  for (const auto& [k, bound] : {std::pair{4, 3e-2}, {16, 5e-3}, {64, 1e-4}}) {
+    for (const auto& p : {std::array{90.0, 110.0, 120.0}, {100.0, 103.0, 99.0}, {98.0, 101.0, 101.0}}) {
+      const SlabRgba e = second_order_entry(tf, p[0], p[1], p[2], 2.0, k);
+      const SlabRgba exact = continuous_integral(tf, p[0], p[1], p[2], 2.0);
+      EXPECT_GT(exact.a, 0.02);
+      EXPECT_LE(max_abs(e, exact), bound) << p[0] << " " << p[1] << " " << p[2] << " K " << k;
+    }
+  }
 }
 
 TEST(SecondOrderEntry, ConvergesToTheContinuousParabolaIntegral) {
@@ -97,10 +105,10 @@ TEST(SecondOrderEntry, ConvergesToTheContinuousParabolaIntegral) {
     const SlabRgba exact = continuous_integral(tf, p[0], p[1], p[2], 1.5);
     const double e64 = max_abs(second_order_entry(tf, p[0], p[1], p[2], 1.5, 64), exact);
     const double e256 = max_abs(second_order_entry(tf, p[0], p[1], p[2], 1.5, 256), exact);
-    // The midpoint rule: O(1/K^2) even across the transfer function's kinks.
+    // Chords depart from the parabola by O(1/K^2) in the scalar.
     EXPECT_LE(e256, 2e-4) << p[0] << " " << p[1] << " " << p[2];
     EXPECT_LE(max_abs(second_order_entry(tf, p[0], p[1], p[2], 1.5, 4096), exact), 2e-6);
-    if (e64 > 1e-6) {
+    if (e64 > 1e-4) {  // well above the trapezoid reference's own error at steps
       EXPECT_LE(e256, e64 / 6) << p[0] << " " << p[1] << " " << p[2];
     }
   }

@@ -50,5 +50,30 @@ TEST(SpikeRender, Preint1SeesASpikeNarrowerThanOneBin) {
   }
 }
 
+double rms_alpha(const Image& a, const Image& b) {
+  double sum2 = 0;
+  for (std::size_t k = 3; k < a.data().size(); k += 4) sum2 += std::pow(double(a.data()[k]) - b.data()[k], 2);
+  return std::sqrt(sum2 / (a.data().size() / 4));
+}
+
+// Issue 16, item 5: with chords that integrate what they cross, the second
+// order wins at equal step on the spike (before: RMS 0.0351 against 0.0313,
+// its table's point samples stepped over the spike).
+TEST(SpikeRender, Preint2AtStep2BeatsPreint1AtStep2) {
+  Scene scene = load_scene(test::source_path("scenes/neghip_spike.json"));
+  scene.camera.width = scene.camera.height = 64;
+  const Camera camera(scene.camera);
+  const Image reference =
+      render(camera, *make_integrator({.name = "exact", .tolerance = 1e-6}, scene.grid(), scene.transfer_function));
+  const double first = rms_alpha(
+      render(camera, *make_integrator({.name = "preint1", .step = 2}, scene.grid(), scene.transfer_function)),
+      reference);
+  const double second = rms_alpha(
+      render(camera, *make_integrator({.name = "preint2", .step = 2}, scene.grid(), scene.transfer_function)),
+      reference);
+  std::printf("RMS alpha against exact at step 2: preint1 %.4f, preint2 %.4f\n", first, second);
+  EXPECT_LT(second, 0.85 * first);
+}
+
 }  // namespace
 }  // namespace vri

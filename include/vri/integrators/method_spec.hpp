@@ -4,6 +4,7 @@
 #include <string>
 
 #include "vri/integrators/fast_path.hpp"
+#include "vri/tables/second_order_table.hpp"  // kDefaultSecondOrderIterations
 
 namespace vri {
 
@@ -13,7 +14,7 @@ struct MethodSpec {
   double tolerance = 1e-6;   // exact, adaptive
   int table_size = 256;      // preint*, pt*
   bool table_size_given = false;  // named by the scene or a flag; else preint2-dual uses its own default (64)
-  int iterations = 64;       // preint2*: parabola steps per second-order table entry (1..4096)
+  int iterations = kDefaultSecondOrderIterations;  // preint2*: chords per second-order table entry (1..4096)
   int length_samples = 64;   // pt, tet-raycast: lengths in the (l, s_f, s_b) table
   int planes = 0;            // pt-cylindrical: cylinder planes (0: table_size)
   // adaptive (Campagnolo et al. 2015 defaults), voxel units; strategy:

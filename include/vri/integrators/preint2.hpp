@@ -61,8 +61,8 @@ std::string second_order_builder_name(const std::string& builder);
 class Preint2Integrator final : public Integrator {
  public:
   // step h in voxel units (1e-4 .. 1e4; slabs are 2h long); the table has
-  // table_size entries a side, each entry the parabola stepped `iterations`
-  // times (1 .. kMaxSecondOrderIterations), built by the named second-order
+  // table_size entries a side, each entry the parabola cut into `iterations`
+  // chords (1 .. kMaxSecondOrderIterations), built by the named second-order
   // builder. Throws vri::Error for a lighting mode other than sampled or interpolated.
   Preint2Integrator(const GridVolume& volume, const TransferFunction& tf, double step, int table_size,
                     int iterations, const std::string& builder, const Lighting& lighting = {},

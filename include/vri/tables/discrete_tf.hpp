@@ -43,10 +43,6 @@ class DiscreteTf {
   // The transfer function at a continuous index u in [0, n-1]: linear between
   // the samples in a plain bin, the sub-pieces in a split one.
   TfSample at_index(double u) const;
-  // Linear between the samples at x_i and x_{i+1}, ignoring control points
-  // inside the bin: what the second-order tables still read (their fast
-  // builder interpolates between table scalars only; docs/SECOND_ORDER.md).
-  TfSample between_samples(double u) const;
 
   // Bin k (table scalars k, k+1) split at control points inside it: its
   // sub-pieces from u = k to u = k+1, in order; empty for a plain bin, which is

@@ -11,11 +11,12 @@
 //   specular S_k = int L_k(u) tau T dt     (white),
 //
 // so D_f + D_m + D_b = C and S_f + S_m + S_b = alpha of the unweighted slab.
-// In the table's model (second_order_table.hpp: K homogeneous sub-steps at
-// the parabola's midpoints t_k = (k + 1/2)/K) sub-step k's contribution
-// T_k C_k (resp. T_k alpha_k) is weighted by L(t_k) - the midpoint rule of
-// the model itself, so the weighted entries converge to the integrals above
-// as O(1/K^2), like the unweighted ones.
+// In the table's model (second_order_table.hpp: K chords from P(t_k) to
+// P(t_{k+1}), t_j = j/K) each weight is taken linear across a chord: chord k's
+// integrals weighted by its own front and back weight (weighted_tables.hpp,
+// integrated exactly through the control points) count with L(t_k) and
+// L(t_{k+1}), times the transmittance in front of the chord. So the weighted
+// entries converge to the integrals above as O(1/K^2), like the unweighted ones.
 //
 // Packing: three RGBA tables of N^3 entries,
 //   full = (C, alpha)  (the unweighted table, the same bytes as the builder's build()),

@@ -104,7 +104,9 @@ SlabRgba integrate_slab(const DiscreteTf& tf, double u_f, double u_b, double len
   return acc;
 }
 
-// integrate_slab with linear_piece: the exact slab integral at any scalars.
+// integrate_slab with linear_piece: the exact slab integral at any scalars,
+// and the same at continuous indices u_f, u_b (DiscreteTf::at_index).
 SlabRgba exact_slab(const DiscreteTf& tf, double s_f, double s_b, double length);
+SlabRgba exact_index_slab(const DiscreteTf& tf, double u_f, double u_b, double length);
 
 }  // namespace vri
