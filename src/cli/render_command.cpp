@@ -117,9 +117,9 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--table-size", args->overrides.table_size, "Pre-integration table size");
   cmd->add_option("--iterations", args->overrides.iterations, "preint2*: parabola chords per table entry (1..4096; default 8)");
   cmd->add_option("--termination", args->overrides.termination,
-                  "riemann, preint1, preint2: stop a ray once its transmittance is below this (0: off)");
+                  "riemann, preint1, preint2, preint2-dual: stop a ray once its transmittance is below this (0: off)");
   cmd->add_flag("--no-skip", args->no_skip,
-                "riemann, preint1, preint2: march through empty space too (the plain path)");
+                "riemann, preint1, preint2, preint2-dual: march through empty space too (the plain path)");
   cmd->add_flag("--double", args->double_math, "riemann, preint1, preint2: sample, look up and composite in double (the reference of their float paths)");
   cmd->add_option("--width", args->overrides.width, "Image width in pixels");
   cmd->add_option("--height", args->overrides.height, "Image height in pixels");

@@ -53,8 +53,14 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
   if (spec.name == "preint2")
     return std::make_unique<Preint2Integrator>(volume, tf, spec.step, spec.table_size, spec.iterations,
                                                second_order_builder_name(spec.builder), lighting, spec.fast);
+  if (spec.name == "preint2-dual") {
+    const int size = spec.table_size_given ? spec.table_size : Preint2DualIntegrator::kDefaultTableSize;
+    return std::make_unique<Preint2DualIntegrator>(volume, tf, size, spec.iterations,
+                                                   second_order_builder_name(spec.builder), lighting, spec.fast);
+  }
   if (spec.fast.termination != 0)
-    throw Error(spec.name + ": early ray termination is not supported yet; it works in riemann, preint1 and preint2");
+    throw Error(spec.name + ": early ray termination is not supported yet; it works in riemann, preint1, preint2 "
+                "and preint2-dual");
   if (spec.name == "adaptive") {
     const AdaptiveParams p{spec.tolerance, spec.h0, spec.hmin, spec.hmax,
                            parse_adaptive_strategy(spec.strategy)};
@@ -63,11 +69,6 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
     return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p, lighting);
   }
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
-  if (spec.name == "preint2-dual") {
-    const int size = spec.table_size_given ? spec.table_size : Preint2DualIntegrator::kDefaultTableSize;
-    return std::make_unique<Preint2DualIntegrator>(volume, tf, size, spec.iterations,
-                                                   second_order_builder_name(spec.builder), lighting);
-  }
   if (is_mesh_method(spec.name))
     throw Error("method '" + spec.name + "' needs a tetrahedral mesh (volume {\"file\": \"x.vtk\"} or " +
                 "{\"builtin\": \"tetrahedralized\", ...})");

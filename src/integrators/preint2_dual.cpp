@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "slab_policies.hpp"
 #include "ray_steps.hpp"
 #include "vri/core/error.hpp"
 #include "vri/volume/cell_traversal.hpp"
+#include "vri/volume/empty_space.hpp"
 
 namespace vri {
 
@@ -27,14 +29,32 @@ std::optional<HeadlightShader> dual_shader(const Lighting& lighting, const GridV
 
 // Walks the cell segments of `ray` and composites slab(front, middle, back)
 // per segment, each a SlabSample<State> with state = at(p), and its length.
+// With leap.space, a segment that lies in a run of empty macro cells is not
+// sampled: its three samples are in the run, so its entries are zero (the
+// cells classified with TableOrder::Second); the next segment sampled takes
+// its front at the same position as without skipping, so the image is the
+// same bytes. Stops once T < leap.termination.
 template <class At, class Slab>
-Rgba march_cells(const GridVolume& volume, const Ray& ray, At&& at, Slab&& slab) {
+Rgba march_cells(const GridVolume& volume, const Ray& ray, const detail::Leap& leap, At&& at, Slab&& slab) {
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const auto sample_at = [&](Vec3 p) { return detail::SlabSample<decltype(at(p))>{volume.sample(p), at(p)}; };
   detail::FrontToBack acc;
   auto front = sample_at(ray.at(iv->t0));
+  bool front_valid = true;  // false after a skipped segment: take it again at the next one's ta
+  double empty_until = -std::numeric_limits<double>::infinity(), t_check = empty_until;
   for_each_cell_segment(volume, ray, *iv, [&](const CellSegment& seg) {
+    if (acc.T < leap.termination) return false;
+    if (leap.space && seg.ta >= t_check) {
+      const EmptySpace::Run run = leap.space->run(ray, seg.ta, iv->t1);
+      t_check = run.t_end;
+      empty_until = run.empty ? run.t_end : -std::numeric_limits<double>::infinity();
+    }
+    if (seg.tb <= empty_until) {
+      front_valid = false;
+      return true;
+    }
+    if (!front_valid) front = sample_at(ray.at(seg.ta)), front_valid = true;
     const auto middle = sample_at(ray.at(0.5 * (seg.ta + seg.tb))), back = sample_at(ray.at(seg.tb));
     const Rgba v = slab(front, middle, back, seg.tb - seg.ta);
     acc.add(v[0], v[1], v[2], v[3]);
@@ -47,9 +67,13 @@ Rgba march_cells(const GridVolume& volume, const Ray& ray, At&& at, Slab&& slab)
 }  // namespace
 
 Preint2DualIntegrator::Preint2DualIntegrator(const GridVolume& volume, const TransferFunction& tf, int table_size,
-                                             int iterations, const std::string& builder, const Lighting& lighting)
-    : volume_(volume), shader_(dual_shader(lighting, volume)) {
-  const DiscreteTf d(tf, table_size);
+                                             int iterations, const std::string& builder, const Lighting& lighting,
+                                             const FastPath& fast)
+    : volume_(volume),
+      shader_(dual_shader(lighting, volume)),
+      tf_(tf, table_size),
+      fast_(volume, ZeroOpacity(tf_, TableOrder::Second), fast, "preint2-dual") {
+  const DiscreteTf& d = tf_;
   const auto make = make_second_order_builder(builder);
   if (shader_ && lighting.mode == "interpolated")
     weighted_.emplace(build_second_order_weighted_length_tables(*make, d, kLengths, longest_chord(volume), iterations));
@@ -60,9 +84,10 @@ Preint2DualIntegrator::Preint2DualIntegrator(const GridVolume& volume, const Tra
 const SecondOrderLengthTable& Preint2DualIntegrator::table() const { return weighted_ ? weighted_->full : *table_; }
 
 Rgba Preint2DualIntegrator::integrate(const Ray& ray) const {
+  const detail::Leap leap{fast_.space(), fast_.termination()};
   if (weighted_)
     return march_cells(
-        volume_, ray, [&](Vec3 p) { return shader_->at(p, ray.dir); },
+        volume_, ray, leap, [&](Vec3 p) { return shader_->at(p, ray.dir); },
         [&](const auto& f, const auto& m, const auto& b, double l) {
           const auto look = [&](const SecondOrderLengthTable& t) { return t.lookup(l, f.s, m.s, b.s); };
           return slabs::lit_lagrange(std::array{f.state, m.state, b.state}, look(weighted_->full), look(weighted_->middle),
@@ -70,14 +95,14 @@ Rgba Preint2DualIntegrator::integrate(const Ray& ray) const {
         });
   if (shader_)
     return march_cells(
-        volume_, ray, [&](Vec3 p) { return shader_->gradients().sample(p); },
+        volume_, ray, leap, [&](Vec3 p) { return shader_->gradients().sample(p); },
         [&](const auto& f, const auto& m, const auto& b, double l) {
           return slabs::lit_by(shader_->terms(slabs::mean_gradient(std::array{f, m, b}), ray.dir),
                                table_->lookup(l, f.s, m.s, b.s));
         });
   struct Nothing {};
   return march_cells(
-      volume_, ray, [](Vec3) { return Nothing{}; },
+      volume_, ray, leap, [](Vec3) { return Nothing{}; },
       [&](const auto& f, const auto& m, const auto& b, double l) { return table_->lookup(l, f.s, m.s, b.s); });
 }
 

@@ -37,7 +37,7 @@ SceneRenderer::SceneRenderer(const Scene& scene) : scene_(checked(scene)), camer
     return;
   }
   if (m.fast.termination != 0)
-    throw Error(m.name + ": early ray termination is not supported yet; it works in riemann, preint1 and preint2");
+    throw Error(m.name + ": early ray termination is not supported yet; it works in riemann, preint1, preint2 and preint2-dual");
   projected_ = std::make_unique<Projected>();
   Projected& p = *projected_;
   p.table = make_slab_table(m, scene.mesh(), scene.transfer_function);

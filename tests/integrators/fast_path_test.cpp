@@ -1,6 +1,6 @@
-// The fast path of riemann, preint1 and preint2 (fast_path.hpp) against the
-// plain one, pixel by pixel: empty-space skipping changes no bit (on the float
-// paths of the three and on their double paths), early termination
+// The fast path of riemann, preint1, preint2 and preint2-dual (fast_path.hpp)
+// against the plain one, pixel by pixel: empty-space skipping changes no bit
+// (on the float paths of the first three and on every double path), early termination
 // changes a pixel by at most its threshold, the float paths stay within 1e-4
 // per channel of the double paths, their packets of rays give the bytes of
 // their scalar marches, and all give the same bytes with any thread count.
@@ -87,6 +87,24 @@ TEST(FastPath, Preint2SkippingChangesNoBitOnNeghip) {
     }
 }
 
+// preint2-dual's cell segments: a segment inside a run of empty macro cells is
+// not sampled, and the next one takes its front at the same position.
+TEST(FastPath, Preint2DualSkippingChangesNoBit) {
+  for (const char* file : {"scenes/neghip.json", "scenes/bonsai.json"}) {
+    const Scene scene = small(file, 48);
+    const MethodSpec spec{.name = "preint2-dual", .table_size = 32, .table_size_given = true, .iterations = 8};
+    expect_same_bytes(render_with(scene, spec, kPlain), render_with(scene, spec, kSkip), file);
+  }
+  const Scene scene = small("scenes/neghip_lit.json", 40);
+  Lighting lighting = scene.lighting;
+  for (const char* mode : {"sampled", "interpolated"}) {
+    lighting.mode = mode;
+    const MethodSpec spec{.name = "preint2-dual", .table_size = 24, .table_size_given = true, .iterations = 8};
+    expect_same_bytes(render_with(scene, spec, kPlain, lighting), render_with(scene, spec, kSkip, lighting),
+                      std::string("preint2-dual ") + mode);
+  }
+}
+
 TEST(FastPath, SkippingChangesNoBitWithLighting) {
   const Scene scene = small("scenes/neghip_lit.json", 64);
   Lighting lighting = scene.lighting;
@@ -162,8 +180,8 @@ TEST(FastPath, SkippingChangesNoBitOnRandomTransferFunctionsAndAlignedRays) {
 // colours are at most 1).
 TEST(FastPath, TerminationChangesAPixelByAtMostItsThreshold) {
   const Scene scene = small("scenes/bonsai.json", 40);
-  for (const char* name : {"riemann", "preint1", "preint2"}) {
-    const MethodSpec spec{.name = name, .step = 1, .table_size = 64, .iterations = 16};
+  for (const char* name : {"riemann", "preint1", "preint2", "preint2-dual"}) {
+    const MethodSpec spec{.name = name, .step = 1, .table_size = 32, .table_size_given = true, .iterations = 8};
     const Image plain = render_with(scene, spec, kPlain);
     for (double eps : {0.3, 0.05}) {
       const Image cut = render_with(scene, spec, {.skip_empty = true, .termination = eps});
@@ -304,8 +322,8 @@ TEST(FastPath, LitFloatPathsAndPackets) {
 
 TEST(FastPath, SameBytesWithAnyThreadCount) {
   const Scene scene = small("scenes/neghip.json", 64);
-  for (const char* name : {"riemann", "preint1", "preint2"}) {
-    const MethodSpec spec{.name = name, .step = 1, .table_size = 64, .iterations = 16};
+  for (const char* name : {"riemann", "preint1", "preint2", "preint2-dual"}) {
+    const MethodSpec spec{.name = name, .step = 1, .table_size = 32, .table_size_given = true, .iterations = 8};
     const FastPath fast{.skip_empty = true, .termination = 0.02};
     const Image one = render_with(scene, spec, fast, {}, {.threads = 1, .tile_size = 16});
     expect_same_bytes(one, render_with(scene, spec, fast, {}, {.threads = 2, .tile_size = 7}), name);
@@ -318,7 +336,8 @@ TEST(FastPath, BadThresholdsAndUnsupportedMethodsAreErrors) {
   for (double bad : {-0.1, 1.0, std::nan("")})
     EXPECT_THROW(render_with(scene, {.name = "preint1"}, {.termination = bad}), Error) << bad;
   EXPECT_THROW(render_with(scene, {.name = "exact"}, {.termination = 0.01}), Error);
-  EXPECT_THROW(render_with(scene, {.name = "preint2-dual"}, {.termination = 0.01}), Error);
+  EXPECT_THROW(render_with(scene, {.name = "adaptive"}, {.termination = 0.01}), Error);
+  EXPECT_THROW(render_with(scene, {.name = "preint2-dual"}, {.termination = 1.0}), Error);
 }
 
 }  // namespace

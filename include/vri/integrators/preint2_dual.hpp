@@ -18,9 +18,15 @@
 // the three samples' gradients; `interpolated`, the shading quadratic through
 // the three samples, with the weighted tables of second_order_weighted.hpp at
 // every length: 3x the memory, 384 MiB at the default table_size 64.
+//
+// Fast path (fast_path.hpp): segments in runs of empty macro cells (classified
+// for second-order entries) are not sampled, which changes no byte, and
+// `termination` stops a ray once T falls below it. There is no float path:
+// every slab reads two trilinear lookups of the 4D table in double.
 #include <optional>
 #include <string>
 
+#include "vri/integrators/fast_path.hpp"
 #include "vri/integrators/integrator.hpp"
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/shading/lighting.hpp"
@@ -40,7 +46,7 @@ class Preint2DualIntegrator final : public Integrator {
   // the iterations are out of range (see preint2.hpp for the builder), or for
   // a lighting mode other than sampled or interpolated.
   Preint2DualIntegrator(const GridVolume& volume, const TransferFunction& tf, int table_size, int iterations,
-                        const std::string& builder, const Lighting& lighting = {});
+                        const std::string& builder, const Lighting& lighting = {}, const FastPath& fast = {});
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "preint2-dual"; }
 
@@ -50,6 +56,8 @@ class Preint2DualIntegrator final : public Integrator {
  private:
   const GridVolume& volume_;
   std::optional<HeadlightShader> shader_;                   // when lit
+  DiscreteTf tf_;
+  detail::Skipping fast_;
   std::optional<SecondOrderLengthTable> table_;             // unless interpolated
   std::optional<SecondOrderWeightedLengthTables> weighted_;  // when lit and interpolated
 };
