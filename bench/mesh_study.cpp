@@ -49,6 +49,8 @@ int main(int argc, char** argv) {
   const auto table = vri::make_slab_table(spec, mesh, s.transfer_function);
   const vri::Image pt = vri::render_projected(cam, mesh, *table);
   row("pt", exact, pt);
+  row("pt, per-vertex (the papers': screen-linear (l, s_f, s_b), cell-centre sort)", exact,
+      vri::render_projected(cam, mesh, *table, {}, {}, nullptr, vri::PtReconstruction::PerVertex));
   for (int planes : {n / 2, n, 2 * n, 4 * n})
     row("pt-cylindrical, " + std::to_string(planes) + " planes", exact,
         vri::render_projected(cam, mesh, vri::CylindricalTable(*table, s.transfer_function, n, planes)));

@@ -68,9 +68,10 @@ class TileRaster {
   using CylinderTables = std::array<const CylindricalTable*, 3>;
   // Exactly one of slab[0] and cylinder[0] is given. lighting: null when unlit.
   TileRaster(const Camera& cam, const TetMesh& mesh, SlabTables slab, CylinderTables cylinder,
-             const std::vector<Screen>& screen, Vec3 view, bool perspective, const ChordLighting* lighting)
+             const std::vector<Screen>& screen, Vec3 view, bool perspective, const ChordLighting* lighting,
+             PtReconstruction reconstruction)
       : cam_(cam), mesh_(mesh), slab_(slab), cylinder_(cylinder), screen_(screen), view_(view),
-        perspective_(perspective), lighting_(lighting) {}
+        perspective_(perspective), lighting_(lighting), per_vertex_(reconstruction == PtReconstruction::PerVertex) {}
 
   void draw(std::int32_t tet, int x0, int y0, int x1, int y1, std::vector<Fragment>& out) const {
     const auto& v = mesh_.tets()[tet];
@@ -120,26 +121,32 @@ class TileRaster {
       std::swap(da, db);
     }
     const Vertex thick{txy, pa, pb, sa, sb, da, db};
+    // PerVertex: one depth for all the tetrahedron's fragments, its centre's.
+    const double centre = 0.25 * (screen_[v[0]].depth + screen_[v[1]].depth + screen_[v[2]].depth + screen_[v[3]].depth);
     // pt-cylindrical: the tetrahedron's cylinder plane, from its thick vertex (equation 10).
     const double alpha = cylinder_[0] ? cylinder_[0]->alpha(length(pb - pa), sa, sb) : 0;
     if (pr.kind == 1) {
       const auto& o = pr.others;
-      for (int k = 0; k < 3; ++k) triangle(tet, alpha, thick, silhouette(o[k]), silhouette(o[(k + 1) % 3]), x0, y0, x1, y1, out);
+      for (int k = 0; k < 3; ++k) triangle(tet, alpha, centre, thick, silhouette(o[k]), silhouette(o[(k + 1) % 3]), x0, y0, x1, y1, out);
     } else {
       // The quadrilateral's corners in order around it alternate between the two diagonals.
       const int ring[4] = {pr.edge_a[0], pr.edge_b[0], pr.edge_a[1], pr.edge_b[1]};
       for (int k = 0; k < 4; ++k)
-        triangle(tet, alpha, thick, silhouette(ring[k]), silhouette(ring[(k + 1) % 4]), x0, y0, x1, y1, out);
+        triangle(tet, alpha, centre, thick, silhouette(ring[k]), silhouette(ring[(k + 1) % 4]), x0, y0, x1, y1, out);
     }
   }
 
  private:
   double depth(Vec3 p) const { return dot(p - cam_.spec().eye, view_); }
-  // The divisor of perspective-correct interpolation (1 under orthographic projection).
+  // The divisor of perspective-correct interpolation (1 under orthographic
+  // projection). The thick vertex's own points are exact either way.
   double weight_depth(std::int32_t point) const { return perspective_ ? screen_[point].depth : 1.0; }
-  double weight_of(double d) const { return perspective_ ? d : 1.0; }
+  // Across a triangle: 1 (linear in screen space) for PerVertex; there the
+  // silhouette vertices' front = back, so l = |back - front| is the thick
+  // vertex's l times its screen barycentric, the papers' interpolated l.
+  double weight_of(double d) const { return perspective_ && !per_vertex_ ? d : 1.0; }
 
-  void triangle(std::int32_t tet, double alpha, const Vertex& a, const Vertex& b, const Vertex& c, int x0, int y0, int x1, int y1,
+  void triangle(std::int32_t tet, double alpha, double centre, const Vertex& a, const Vertex& b, const Vertex& c, int x0, int y0, int x1, int y1,
                 std::vector<Fragment>& out) const {
     const double area = edge(a.xy, b.xy, c.xy);
     if (area == 0) return;
@@ -178,7 +185,7 @@ class TileRaster {
         // A silhouette pixel (l = 0) has no chord to light: the empty slab.
         const Rgba v = lighting_ && l > 0 ? lighting_->chord(look, tet, f, k, (k - f) * (1 / l)) : look(ChordTable::plain);
         if (v[3] == 0 && v[0] == 0 && v[1] == 0 && v[2] == 0) continue;
-        out.push_back({y * W + x, tet, depth(f), {float(v[0]), float(v[1]), float(v[2]), float(v[3])}});
+        out.push_back({y * W + x, tet, per_vertex_ ? centre : depth(f), {float(v[0]), float(v[1]), float(v[2]), float(v[3])}});
       }
   }
 
@@ -190,10 +197,12 @@ class TileRaster {
   Vec3 view_;
   bool perspective_;
   const ChordLighting* lighting_;
+  bool per_vertex_;
 };
 
 Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, TileRaster::SlabTables slab,
-                        TileRaster::CylinderTables cylinder, const RenderOptions& options, const Lighting& lighting) {
+                        TileRaster::CylinderTables cylinder, const RenderOptions& options, const Lighting& lighting,
+                        PtReconstruction reconstruction) {
   if (options.threads < 0) throw Error("thread count must be >= 0");
   if (options.tile_size <= 0) throw Error("tile size must be positive");
   std::optional<ChordLighting> lit;
@@ -243,7 +252,8 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, TileRaster::S
       for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx) bins[std::size_t(ty) * tiles_x + tx].push_back(std::int32_t(t));
     }
-    const TileRaster raster(camera, mesh, slab, cylinder, screen, view, perspective, lit ? &*lit : nullptr);
+    const TileRaster raster(camera, mesh, slab, cylinder, screen, view, perspective, lit ? &*lit : nullptr,
+                            reconstruction);
     tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const tbb::blocked_range<int>& r) {
       std::vector<Fragment> frags, by_pixel;
       std::vector<std::size_t> start;
@@ -284,10 +294,11 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, TileRaster::S
 }  // namespace
 
 Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTable& table,
-                       const RenderOptions& options, const Lighting& lighting, const WeightedLengthTables* weighted) {
+                       const RenderOptions& options, const Lighting& lighting, const WeightedLengthTables* weighted,
+                       PtReconstruction reconstruction) {
   return render_tetrahedra(camera, mesh,
                            {&table, weighted ? &weighted->front : nullptr, weighted ? &weighted->back : nullptr}, {},
-                           options, lighting);
+                           options, lighting, reconstruction);
 }
 
 Image render_projected(const Camera& camera, const TetMesh& mesh, const CylindricalTable& table,
@@ -295,7 +306,7 @@ Image render_projected(const Camera& camera, const TetMesh& mesh, const Cylindri
                        const WeightedCylindricalTables* weighted) {
   return render_tetrahedra(camera, mesh, {},
                            {&table, weighted ? &weighted->front : nullptr, weighted ? &weighted->back : nullptr},
-                           options, lighting);
+                           options, lighting, PtReconstruction::PerPixel);
 }
 
 }  // namespace vri

@@ -148,6 +148,34 @@ TEST(ProjectedTetrahedra, MatchesRaycastOnTheBundledMesh) {
   EXPECT_LT(e.vs_raycast, 1e-5);
 }
 
+// The papers' reconstruction (PtReconstruction::PerVertex): under an
+// orthographic camera the interpolation is linear either way and a single
+// tetrahedron has nothing to sort, so it is vri's pt to the byte; under a
+// perspective camera its screen-linear (l, s_f, s_b) departs from each
+// pixel's ray, less as the eye moves away (the perspective flattens).
+TEST(ProjectedTetrahedra, PerVertexReconstructionIsThePapers) {
+  const TetMesh one({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 4}}, {{0, 1, 2, 3}}, {0.1, 0.9, 0.5, 0.7});
+  const LengthTable table = test::length_table(tf(), 64, 16, one.max_edge_length());
+  const auto difference = [&](const CameraSpec& spec) {
+    CameraSpec cs = spec;
+    cs.width = cs.height = 48;
+    const Camera cam(cs);
+    const Image a = render_projected(cam, one, table), b = render_projected(cam, one, table, {}, {}, nullptr,
+                                                                           PtReconstruction::PerVertex);
+    double worst = 0;
+    for (std::size_t i = 0; i < a.data().size(); ++i) worst = std::max(worst, double(std::abs(a.data()[i] - b.data()[i])));
+    return worst;
+  };
+  CameraSpec ortho = view({9, 7, 8}, {1, 1, 1}, true);
+  ortho.ortho_height = 7;
+  EXPECT_EQ(difference(ortho), 0.0);
+  CameraSpec near = view({5, 4, 4.5}, {1, 1, 1}, false), far = view({21, 17, 19}, {1, 1, 1}, false);
+  near.fov_y = 70, far.fov_y = 17;  // about the same image of the tetrahedron
+  const double d_near = difference(near), d_far = difference(far);
+  EXPECT_GT(d_near, 1e-3);
+  EXPECT_LT(d_far, 0.5 * d_near);
+}
+
 // Visibility order: two slabs, red in front of blue seen from one side and
 // blue in front of red from the other; nearly opaque, so the order decides.
 TEST(ProjectedTetrahedra, NearerSlabCoversTheFartherOne) {

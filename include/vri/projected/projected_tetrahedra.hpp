@@ -35,11 +35,25 @@
 
 namespace vri {
 
+// What pt interpolates across a projected tetrahedron (docs/MESHES.md).
+enum class PtReconstruction {
+  // vri's `pt`: each pixel's exact (l, s_f, s_b), the front and back points
+  // interpolated perspective-correct, fragments sorted per pixel by depth.
+  PerPixel,
+  // The papers' (Shirley & Tuchman 1990; Roettger & Ertl 2002 as 2002 GPUs
+  // drew it; VTK's vtkProjectedTetrahedraMapper): (l, s_f, s_b) at the
+  // projected vertices, interpolated linearly in screen space, and the
+  // tetrahedra composited in the order of their centres' view depth (a cell
+  // centre sort, not exact for every mesh). For the study of the deviation.
+  PerVertex,
+};
+
 // The tables must cover mesh.max_edge_length() (vri::Error otherwise);
 // `weighted` is needed for lighting mode interpolated only.
 Image render_projected(const Camera& camera, const TetMesh& mesh, const SlabTable& table,
                        const RenderOptions& options = {}, const Lighting& lighting = {},
-                       const WeightedLengthTables* weighted = nullptr);
+                       const WeightedLengthTables* weighted = nullptr,
+                       PtReconstruction reconstruction = PtReconstruction::PerPixel);
 // pt-cylindrical: the same, each tetrahedron read from the two cylinder planes
 // next to its thick vertex's plane (2D lookups, Roettger & Ertl 2002, Sec. 4);
 // in mode interpolated the weighted tables on the same planes.
