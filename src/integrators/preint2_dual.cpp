@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "dual_march.hpp"
 #include "slab_policies.hpp"
 #include "ray_steps.hpp"
 #include "vri/core/error.hpp"
 #include "vri/volume/cell_traversal.hpp"
-#include "vri/volume/empty_space.hpp"
 
 namespace vri {
 
@@ -29,28 +28,21 @@ std::optional<HeadlightShader> dual_shader(const Lighting& lighting, const GridV
 
 // Walks the cell segments of `ray` and composites slab(front, middle, back)
 // per segment, each a SlabSample<State> with state = at(p), and its length.
-// With leap.space, a segment that lies in a run of empty macro cells is not
-// sampled: its three samples are in the run, so its entries are zero (the
-// cells classified with TableOrder::Second); the next segment sampled takes
-// its front at the same position as without skipping, so the image is the
-// same bytes. Stops once T < leap.termination.
+// Segments SegmentSkip leaves out are not sampled; the next segment sampled
+// takes its front at the same position as without skipping, so the image is
+// the same bytes. Stops once T < leap.termination.
 template <class At, class Slab>
 Rgba march_cells(const GridVolume& volume, const Ray& ray, const detail::Leap& leap, At&& at, Slab&& slab) {
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const auto sample_at = [&](Vec3 p) { return detail::SlabSample<decltype(at(p))>{volume.sample(p), at(p)}; };
   detail::FrontToBack acc;
+  detail::SegmentSkip skip(leap, ray, iv->t1);
   auto front = sample_at(ray.at(iv->t0));
   bool front_valid = true;  // false after a skipped segment: take it again at the next one's ta
-  double empty_until = -std::numeric_limits<double>::infinity(), t_check = empty_until;
   for_each_cell_segment(volume, ray, *iv, [&](const CellSegment& seg) {
     if (acc.T < leap.termination) return false;
-    if (leap.space && seg.ta >= t_check) {
-      const EmptySpace::Run run = leap.space->run(ray, seg.ta, iv->t1);
-      t_check = run.t_end;
-      empty_until = run.empty ? run.t_end : -std::numeric_limits<double>::infinity();
-    }
-    if (seg.tb <= empty_until) {
+    if (skip.skipped(seg)) {
       front_valid = false;
       return true;
     }
@@ -79,12 +71,18 @@ Preint2DualIntegrator::Preint2DualIntegrator(const GridVolume& volume, const Tra
     weighted_.emplace(build_second_order_weighted_length_tables(*make, d, kLengths, longest_chord(volume), iterations));
   else
     table_.emplace(build_second_order_length_table(*make, d, kLengths, longest_chord(volume), iterations));
+  if (fast.float_math && !shader_) float_table_ = std::make_unique<detail::DualFloatLookup>(*table_);
 }
+
+Preint2DualIntegrator::~Preint2DualIntegrator() = default;
 
 const SecondOrderLengthTable& Preint2DualIntegrator::table() const { return weighted_ ? weighted_->full : *table_; }
 
 Rgba Preint2DualIntegrator::integrate(const Ray& ray) const {
   const detail::Leap leap{fast_.space(), fast_.termination()};
+  if (float_table_)
+    return volume_.visit(
+        [&](auto values) { return detail::march_cells_float(volume_, values.data(), *float_table_, ray, leap); });
   if (weighted_)
     return march_cells(
         volume_, ray, leap, [&](Vec3 p) { return shader_->at(p, ray.dir); },

@@ -21,8 +21,10 @@
 //
 // Fast path (fast_path.hpp): segments in runs of empty macro cells (classified
 // for second-order entries) are not sampled, which changes no byte, and
-// `termination` stops a ray once T falls below it. There is no float path:
-// every slab reads two trilinear lookups of the 4D table in double.
+// `termination` stops a ray once T falls below it. Unlit, `float_math` (the
+// default) samples, looks up and composites in float (dual_march.hpp);
+// lit scenes stay on the double path.
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -37,6 +39,10 @@
 
 namespace vri {
 
+namespace detail {
+class DualFloatLookup;  // integrators/dual_march.hpp
+}
+
 class Preint2DualIntegrator final : public Integrator {
  public:
   static constexpr int kDefaultTableSize = 64;
@@ -47,6 +53,7 @@ class Preint2DualIntegrator final : public Integrator {
   // a lighting mode other than sampled or interpolated.
   Preint2DualIntegrator(const GridVolume& volume, const TransferFunction& tf, int table_size, int iterations,
                         const std::string& builder, const Lighting& lighting = {}, const FastPath& fast = {});
+  ~Preint2DualIntegrator() override;
   Rgba integrate(const Ray& ray) const override;
   std::string_view name() const override { return "preint2-dual"; }
 
@@ -60,6 +67,7 @@ class Preint2DualIntegrator final : public Integrator {
   detail::Skipping fast_;
   std::optional<SecondOrderLengthTable> table_;             // unless interpolated
   std::optional<SecondOrderWeightedLengthTables> weighted_;  // when lit and interpolated
+  std::unique_ptr<detail::DualFloatLookup> float_table_;     // the float path, unlit
 };
 
 }  // namespace vri
