@@ -29,9 +29,8 @@ using F8 = float __attribute__((vector_size(4 * kLanes)));
 struct DiagonalLayout {
   int pad = 0, width = 0, e_max = 0;
   std::vector<std::vector<float>> channel;
-  const float* at(int c, int e, int x) const {
-    return channel[c].data() + static_cast<std::size_t>(e + e_max) * width + (x + pad);
-  }
+  std::size_t index(int e, int x) const { return static_cast<std::size_t>(e + e_max) * width + (x + pad); }
+  const float* at(int c, int e, int x) const { return channel[c].data() + index(e, x); }
 };
 
 // value(f, b, c): channel c of entry (f, b).
@@ -45,7 +44,7 @@ DiagonalLayout lay_out(int n, int channels, Value value) {
   tbb::parallel_for(-d.e_max, d.e_max + 1, [&](int e) {
     for (int x = -d.pad; x < d.width - d.pad; ++x) {
       const int f = std::clamp(x, 0, n - 1), b = std::clamp(x + e, 0, n - 1);
-      for (int c = 0; c < channels; ++c) const_cast<float*>(d.at(c, e, x))[0] = value(f, b, c);
+      for (int c = 0; c < channels; ++c) d.channel[c][d.index(e, x)] = value(f, b, c);
     }
   });
   return d;
