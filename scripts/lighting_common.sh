@@ -1,12 +1,21 @@
 # Shared by scripts/lighting_results.sh and scripts/lighting_second_order.sh
 # (source it; needs $vri and $size): lit scene variants, renders, and the
 # error measures of docs/LIGHTING.md.
-# A copy of the scene with the data path made absolute, lit in `mode` (or unlit).
+# A copy of the scene with its file paths made absolute, lit in `mode` (or unlit).
 variant() {  # scene mode out
-  local mode=$2 enabled=true
-  if [ "$mode" = unlit ]; then mode=sampled enabled=false; fi
-  sed -e "s|\"\.\./data/|\"$PWD/data/|" -e "s|\"mode\": \"[a-z]*\"|\"mode\": \"$mode\"|" \
-      -e "s|\"enabled\": true|\"enabled\": $enabled|" "$1" > "$3"
+  /usr/bin/python3 - "$@" <<'PY'
+import json, os, sys
+scene, mode, out = sys.argv[1:4]
+d = json.load(open(scene))
+base = os.path.dirname(os.path.abspath(scene))
+for key in ("volume", "transfer_function"):
+    if "file" in d.get(key, {}):
+        d[key]["file"] = os.path.normpath(os.path.join(base, d[key]["file"]))
+light = d.setdefault("lighting", {})
+light["enabled"] = mode != "unlit"
+light["mode"] = "sampled" if mode == "unlit" else mode
+json.dump(d, open(out, "w"))
+PY
 }
 render() {  # scene out.npy args... -> prints seconds
   "$vri" render "$1" -o "$2" --width "$size" --height "$size" "${@:3}" 2>&1 | sed -n 's/.* in \([0-9.e-]*\) s.*/\1/p'

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# lighting_results.sh [BUILD_DIR] [SIZE]: the lit scenes (scenes/*_lit.json,
+# lighting_results.sh [BUILD_DIR] [SIZE]: the lit grid scenes (scenes/*_lit.json,
 # four narrow transfer-function spikes) at SIZE x SIZE with lit `exact`
 # (tolerance 1e-6) and lit `preint1`, lighting.mode sampled and interpolated,
 # at steps 1 and 2. Writes docs/lighting/<scene>_<method>.png and prints the
@@ -17,6 +17,7 @@ echo "| scene | method | step | colour RMS | colour max | share > 1/255 | shadin
 echo "|---|---|---|---|---|---|---|---|"
 for scene in scenes/*_lit.json; do
   name=$(basename "$scene" .json)
+  if grep -q '"\(tetrahedralized\)"\|\.vt[ku]"' "$scene"; then continue; fi  # meshes: mesh_lighting_results.sh
   for mode in sampled interpolated unlit; do variant "$scene" $mode "$tmp/$mode.json"; done
   t=$(render "$tmp/sampled.json" "$tmp/exact.npy" --method exact --tolerance 1e-6)
   render "$tmp/unlit.json" "$tmp/exact_unlit.npy" --method exact --tolerance 1e-6 > /dev/null
