@@ -1,12 +1,14 @@
 #pragma once
 // The cell-segment march of preint2-dual (preint2_dual.hpp), shared by its
 // double path and its float path: which segments empty-space skipping leaves
-// out, and the float path itself.
+// out, and the float path itself (unlit and lit in both modes).
 #include <algorithm>
 #include <cstddef>
 #include <limits>
 #include <vector>
 
+#include "float_march.hpp"
+#include "float_shading.hpp"
 #include "ray_steps.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/tables/second_order_float_lookup.hpp"
@@ -42,57 +44,90 @@ class SegmentSkip {
 
 // The (l, s_f, s_m, s_b) table in float: each length slice read as preint2's
 // float lookup reads its table (trilinear, 4-float vectors), the two slices
-// next to l blended linearly.
+// next to l blended linearly. With interpolated lighting the weighted tables
+// (middle, back) are read at the same spot.
 class DualFloatLookup {
  public:
-  explicit DualFloatLookup(const SecondOrderLengthTable& table) : max_length_(table.max_length()) {
-    for (const SecondOrderTable& t : table.slices()) slices_.emplace_back(t);
+  explicit DualFloatLookup(const SecondOrderLengthTable& full, const SecondOrderLengthTable* middle = nullptr,
+                           const SecondOrderLengthTable* back = nullptr)
+      : max_length_(full.max_length()) {
+    for (std::size_t i = 0; i < full.slices().size(); ++i) {
+      slices_.emplace_back(full.slices()[i]);
+      weighted_.push_back({middle ? middle->slices()[i].data() : nullptr, back ? back->slices()[i].data() : nullptr});
+    }
   }
-  Float4 lookup(double length, float s_f, float s_m, float s_b) const {
+  struct Spot {
+    int i;  // slices i and i + 1
+    float w;
+    SecondOrderFloatLookup::Spot lo, hi;
+  };
+  Spot find(double length, float s_f, float s_m, float s_b) const {
     const int m = static_cast<int>(slices_.size());
     const double u = std::clamp(length / max_length_, 0.0, 1.0) * (m - 1);
     const int i = std::min(static_cast<int>(u), m - 2);
-    const float w = static_cast<float>(u - i);
     const std::array<FloatAxis::Place, 3> p = {slices_[i].place(s_f), slices_[i].place(s_m), slices_[i].place(s_b)};
-    const Float4 lo = slices_[i].blend(slices_[i].find(p)), hi = slices_[i + 1].blend(slices_[i + 1].find(p));
-    return lo + w * (hi - lo);
+    return {i, static_cast<float>(u - i), slices_[i].find(p), slices_[i + 1].find(p)};
+  }
+  // Table k: 0 the unweighted (full) one, 1 middle, 2 back.
+  Float4 blend(const Spot& spot, int k = 0) const {
+    const auto one = [&](int slice, const SecondOrderFloatLookup::Spot& at) {
+      return k == 0 ? slices_[slice].blend(at) : slices_[slice].blend(at, weighted_[slice][k - 1]);
+    };
+    const Float4 lo = one(spot.i, spot.lo), hi = one(spot.i + 1, spot.hi);
+    return lo + spot.w * (hi - lo);
   }
 
  private:
   std::vector<SecondOrderFloatLookup> slices_;
+  std::vector<std::array<const float*, 2>> weighted_;  // per slice: middle, back (interpolated lighting)
   double max_length_;
 };
 
-// The float path (unlit): per segment the cell's eight values are read once
-// and its three samples evaluated from them in float (the front in its own
-// cell too, not carried over from the previous one, so that skipping a
-// segment changes no byte); lookups and compositing in float. The traversal
-// stays in double, so the segments are the double path's.
+// The float path: per segment the cell's eight values (and, lit, their
+// gradients) are read once and its three samples evaluated from them in
+// float (the front in its own cell too, not carried over from the previous
+// one, so that skipping a segment changes no byte); lookups, shading
+// (FloatShading: `sampled` lights the slab with the mean of the three
+// gradients, `interpolated` weighs the weighted tables by each sample's
+// terms) and compositing in float. The traversal stays in double, so the
+// segments are the double path's.
 template <class Value>
-Rgba march_cells_float(const GridVolume& volume, const Value* values, const DualFloatLookup& table, const Ray& ray,
-                       const Leap& leap) {
+Rgba march_cells_float(const GridVolume& volume, const Value* values, const DualFloatLookup& table,
+                       const FloatShading* shading, bool interpolated, const Ray& ray, const Leap& leap) {
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
   const std::size_t sy = volume.dims()[0], sz = sy * volume.dims()[1];
+  const FloatShading::Vector d = direction(ray);
   SegmentSkip skip(leap, ray, iv->t1);
   float T = 1, C[3] = {0, 0, 0};
   for_each_cell_segment(volume, ray, *iv, [&](const CellSegment& seg) {
     if (T < leap.termination) return false;
     if (skip.skipped(seg)) return true;
-    const Value* v = values + seg.cell[0] + sy * seg.cell[1] + sz * seg.cell[2];
-    const float c[8] = {float(v[0]),      float(v[1]),          float(v[sy]),      float(v[sy + 1]),
-                        float(v[sz]),     float(v[sz + 1]),     float(v[sz + sy]), float(v[sz + sy + 1])};
-    const auto at = [&](double dt) {
-      float u[3];
-      for (int a = 0; a < 3; ++a) u[a] = std::clamp(static_cast<float>(seg.local0[a] + dt * seg.local_dir[a]), 0.0f, 1.0f);
-      const float x0 = c[0] + u[0] * (c[1] - c[0]), x1 = c[2] + u[0] * (c[3] - c[2]);
-      const float x2 = c[4] + u[0] * (c[5] - c[4]), x3 = c[6] + u[0] * (c[7] - c[6]);
-      const float y0 = x0 + u[1] * (x1 - x0), y1 = x2 + u[1] * (x3 - x2);
-      return y0 + u[2] * (y1 - y0);
+    const std::size_t offset = seg.cell[0] + sy * seg.cell[1] + sz * seg.cell[2];
+    const std::array<float, 8> c = corners_as_float(values + offset, sy, sz);
+    const auto cell_at = [&](double dt) {
+      FloatSampler::Cell cell{offset, {}};
+      for (int a = 0; a < 3; ++a)
+        cell.f[a] = std::clamp(static_cast<float>(seg.local0[a] + dt * seg.local_dir[a]), 0.0f, 1.0f);
+      return cell;
     };
     const double length = seg.tb - seg.ta;
-    const float front = at(0), middle = at(0.5 * length), back = at(length);
-    const Float4 e = table.lookup(length, front, middle, back);
+    const std::array<FloatSampler::Cell, 3> at = {cell_at(0), cell_at(0.5 * length), cell_at(length)};
+    std::array<float, 3> s;
+    for (int k = 0; k < 3; ++k) s[k] = FloatSampler::interpolate(c, at[k].f);
+    const DualFloatLookup::Spot spot = table.find(length, s[0], s[1], s[2]);
+    Float4 e;
+    if (!shading) {
+      e = table.blend(spot);
+    } else if (!interpolated) {
+      std::array<FloatShading::Vector, 3> g;
+      for (int k = 0; k < 3; ++k) g[k] = shading->gradient(at[k]);
+      e = lit_by(shading->terms(mean(g), d), table.blend(spot));
+    } else {
+      std::array<FloatShading::Terms, 3> t;
+      for (int k = 0; k < 3; ++k) t[k] = shading->terms(shading->gradient(at[k]), d);
+      e = lit_lagrange(t, table.blend(spot, 0), table.blend(spot, 1), table.blend(spot, 2));
+    }
     for (int k = 0; k < 3; ++k) C[k] += T * e[k];
     T *= 1 - e[3];
     return true;

@@ -64,14 +64,20 @@ Preint2DualIntegrator::Preint2DualIntegrator(const GridVolume& volume, const Tra
     : volume_(volume),
       shader_(dual_shader(lighting, volume)),
       tf_(tf, table_size),
-      fast_(volume, ZeroOpacity(tf_, TableOrder::Second), fast, "preint2-dual") {
+      fast_(volume, ZeroOpacity(tf_, TableOrder::Second), fast, "preint2-dual"),
+      float_sampler_(volume) {
   const DiscreteTf& d = tf_;
   const auto make = make_second_order_builder(builder);
   if (shader_ && lighting.mode == "interpolated")
     weighted_.emplace(build_second_order_weighted_length_tables(*make, d, kLengths, longest_chord(volume), iterations));
   else
     table_.emplace(build_second_order_length_table(*make, d, kLengths, longest_chord(volume), iterations));
-  if (fast.float_math && !shader_) float_table_ = std::make_unique<detail::DualFloatLookup>(*table_);
+  if (!fast.float_math) return;
+  if (weighted_)
+    float_table_ = std::make_unique<detail::DualFloatLookup>(weighted_->full, &weighted_->middle, &weighted_->back);
+  else
+    float_table_ = std::make_unique<detail::DualFloatLookup>(*table_);
+  if (shader_) float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
 }
 
 Preint2DualIntegrator::~Preint2DualIntegrator() = default;
@@ -81,8 +87,10 @@ const SecondOrderLengthTable& Preint2DualIntegrator::table() const { return weig
 Rgba Preint2DualIntegrator::integrate(const Ray& ray) const {
   const detail::Leap leap{fast_.space(), fast_.termination()};
   if (float_table_)
-    return volume_.visit(
-        [&](auto values) { return detail::march_cells_float(volume_, values.data(), *float_table_, ray, leap); });
+    return volume_.visit([&](auto values) {
+      return detail::march_cells_float(volume_, values.data(), *float_table_, float_shading_.get(),
+                                       weighted_.has_value(), ray, leap);
+    });
   if (weighted_)
     return march_cells(
         volume_, ray, leap, [&](Vec3 p) { return shader_->at(p, ray.dir); },

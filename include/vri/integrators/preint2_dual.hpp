@@ -21,9 +21,9 @@
 //
 // Fast path (fast_path.hpp): segments in runs of empty macro cells (classified
 // for second-order entries) are not sampled, which changes no byte, and
-// `termination` stops a ray once T falls below it. Unlit, `float_math` (the
-// default) samples, looks up and composites in float (dual_march.hpp);
-// lit scenes stay on the double path.
+// `termination` stops a ray once T falls below it. `float_math` (the
+// default) samples, looks up, shades and composites in float, unlit and lit
+// (dual_march.hpp).
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,12 +35,14 @@
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/second_order_table.hpp"
 #include "vri/tables/second_order_weighted.hpp"
+#include "vri/volume/float_sampler.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri {
 
 namespace detail {
 class DualFloatLookup;  // integrators/dual_march.hpp
+class FloatShading;     // integrators/float_shading.hpp
 }
 
 class Preint2DualIntegrator final : public Integrator {
@@ -67,7 +69,9 @@ class Preint2DualIntegrator final : public Integrator {
   detail::Skipping fast_;
   std::optional<SecondOrderLengthTable> table_;             // unless interpolated
   std::optional<SecondOrderWeightedLengthTables> weighted_;  // when lit and interpolated
-  std::unique_ptr<detail::DualFloatLookup> float_table_;     // the float path, unlit
+  FloatSampler float_sampler_;
+  std::unique_ptr<detail::DualFloatLookup> float_table_;     // the float path
+  std::unique_ptr<detail::FloatShading> float_shading_;      // the float path, lit
 };
 
 }  // namespace vri
