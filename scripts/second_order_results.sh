@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # second_order_results.sh [BUILD_DIR] [SIZE] [REPEATS]: the results study of
 # docs/SECOND_ORDER.md (issue 4 item 6, El Hajjar et al. 2008 Figures 7-9).
-# Renders neghip, fuel, bucky and neghip_spike (a spike narrower than a table
-# bin) at SIZE x SIZE with `exact` (tolerance 1e-5),
+# Renders neghip, fuel, bucky, neghip_spike (a spike narrower than a table
+# bin) and neghip_opaque (a steep opaque ramp) at SIZE x SIZE with `exact`
+# (tolerance 1e-5),
 # preint1 at steps A and B, preint2 at step A (A, B = 2, 1; bucky 4, 1) with
 # tables of 256 (the default), 128 and 64 entries a side, and preint2-dual
 # (64 entries, 32 lengths), all with the default K (8 chords), and preint1 at step 0.25
@@ -44,7 +45,7 @@ error() {
 
 echo "| scene | method | RMS | max | > 1/255 | render s | render + table s |"
 echo "|---|---|---|---|---|---|---|"
-for name in neghip fuel bucky neghip_spike; do
+for name in neghip fuel bucky neghip_spike neghip_opaque; do
   scene=scenes/$name.json
   if [ "$name" = bucky ]; then a=4; b=1; else a=2; b=1; fi
   read -r rt tt < <(image=1 repeats=1 render "$scene" "${name}_exact" --method exact --tolerance 1e-5)
