@@ -95,7 +95,7 @@ void bind_analysis(py::module_& m) {
         "[l, s_f, s_b]; order 2 (N, N, N, 4) indexed [s_f, s_m, s_b]. Entry i stands for\n"
         "s_lo + i (s_hi - s_lo) / (N - 1) over the control points' span. tf: a dict ({\"points\":\n"
         "[[s, r, g, b, tau], ...]}), a transfer-function file or a vri.Scene. builder: order 1\n"
-        "brute, incremental (default), sliced, engel or exact; order 2 plain or fast (default).");
+        "brute, incremental (default), sliced, engel or exact; order 2 plain, fast (default) or exact.");
   py::class_<ChannelDifference>(m, "ChannelDifference", "One channel of vri.compare.")
       .def_readonly("share_over", &ChannelDifference::share_over, "share of pixels with |a - b| > tolerance")
       .def_readonly("rms", &ChannelDifference::rms)

@@ -46,7 +46,7 @@ Runner add_table_command(CLI::App& app) {
   cmd->add_option("--lengths", args->request.lengths, "Number of slab lengths M: shape (M, N, N, 4)");
   cmd->add_option("--max-length", args->request.max_length, "Largest slab length LMAX (with --lengths)");
   cmd->add_option("--builder", args->request.builder,
-                  "order 1: brute, incremental, sliced, engel or exact (default incremental); order 2: plain or fast (default)");
+                  "order 1: brute, incremental, sliced, engel or exact (default incremental); order 2: plain, fast (default) or exact (small N: every entry to 1e-7)");
   cmd->add_option("--iterations", args->request.iterations, "order 2: chords per slab K, 1..4096 (default 8)");
   cmd->add_option("--steps", args->request.steps, "sliced: integration steps (default 2N)");
   cmd->add_option("--accumulation", args->request.accumulation, "sliced: 8bit, 12bit, fp16 or fp32 (default fp32)");

@@ -9,6 +9,7 @@
 #include "tables/second_order_chords.hpp"
 #include "tables/trilinear.hpp"
 #include "vri/core/error.hpp"
+#include "vri/tables/second_order_exact.hpp"
 #include "vri/tables/second_order_fast.hpp"
 #include "vri/tables/second_order_plain.hpp"
 #include "vri/tables/slab_integral.hpp"
@@ -54,7 +55,8 @@ void check_iterations(int iterations) {
 std::unique_ptr<SecondOrderBuilder> make_second_order_builder(const std::string& name) {
   if (name == "plain") return std::make_unique<PlainSecondOrderBuilder>();
   if (name == "fast") return std::make_unique<FastSecondOrderBuilder>();
-  throw Error("unknown second-order table builder '" + name + "' (known: plain, fast)");
+  if (name == "exact") return std::make_unique<ExactSecondOrderBuilder>();
+  throw Error("unknown second-order table builder '" + name + "' (known: plain, fast, exact)");
 }
 
 SecondOrderLengthTable::SecondOrderLengthTable(std::vector<SecondOrderTable> slices, double max_length)

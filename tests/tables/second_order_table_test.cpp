@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 #include "tables/random_tf.hpp"
 #include "vri/core/error.hpp"
+#include "vri/tables/second_order_exact.hpp"
 #include "vri/tables/second_order_table.hpp"
 #include "vri/tables/slab_integral.hpp"
 
@@ -112,6 +114,38 @@ TEST(SecondOrderEntry, ConvergesToTheContinuousParabolaIntegral) {
       EXPECT_LE(e256, e64 / 6) << p[0] << " " << p[1] << " " << p[2];
     }
   }
+}
+
+// The `exact` builder (second_order_exact.hpp) against the closed form of a
+// constant parabola and the independent trapezoid quadrature along the
+// continuous parabola; `plain` at the default K and `fast` against it.
+TEST(ExactSecondOrderBuilder, MatchesClosedFormsAndQuadrature) {
+  const TransferFunction spike({{0, 0.2, 0.4, 1, 0.5}, {100.2, 1, 0.5, 0.2, 0.5}, {100.5, 1, 0.5, 0.2, 4},
+                                {100.8, 1, 0.5, 0.2, 0.5}, {255, 0.5, 1, 0.5, 1}});
+  const DiscreteTf tf(spike, 24);  // the spike inside bin 9
+  for (int i : {0, 9, 23}) {
+    const double a = -std::expm1(-tf[i].tau * 1.5);
+    EXPECT_NEAR(exact_second_order_entry(tf, i, i, i, 1.5).full.a, a, 1e-12);
+  }
+  const double fmb[][3] = {{0, 23, 5}, {3, 12, 20}, {20, 2, 18}, {8, 10, 9}, {23, 23, 0}};
+  for (const auto& p : fmb)
+    EXPECT_LE(max_abs(exact_second_order_entry(tf, p[0], p[1], p[2], 1.5).full,
+                      continuous_integral(tf, p[0], p[1], p[2], 1.5)),
+              1e-5)
+        << p[0] << " " << p[1] << " " << p[2];
+  const DiscreteTf small(spike, 12);  // every entry to 1e-7 takes a while
+  const auto exact = make_second_order_builder("exact")->build(small, 1.5, 1);
+  double plain = 0, fast = 0;
+  const SecondOrderTable p8 = make_second_order_builder("plain")->build(small, 1.5, kDefaultSecondOrderIterations),
+                         f8 = make_second_order_builder("fast")->build(small, 1.5, kDefaultSecondOrderIterations);
+  for (std::size_t k = 0; k < exact.bytes() / sizeof(float); ++k) {
+    plain = std::max(plain, double(std::abs(p8.data()[k] - exact.data()[k])));
+    fast = std::max(fast, double(std::abs(f8.data()[k] - exact.data()[k])));
+  }
+  std::printf("against exact at K = 8: plain %.3g, fast %.3g\n", plain, fast);
+  EXPECT_LE(plain, 0.03);  // measured 0.018: the chord polyline at K = 8
+  EXPECT_LE(fast, 0.1);    // measured 0.070: and the bilinear chord lookups inside the spike's bin
+  EXPECT_THROW(make_second_order_builder("exact")->build(DiscreteTf(spike, 65), 1.0, 1), Error);
 }
 
 TEST(SecondOrderTable, LookupIsTrilinearBetweenEntries) {

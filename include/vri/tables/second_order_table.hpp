@@ -90,7 +90,7 @@ class SecondOrderBuilder {
   virtual SecondOrderWeightedTables build_weighted(const DiscreteTf& tf, double length, int iterations) const = 0;
 };
 
-// "plain" or "fast"; throws vri::Error naming the known ones otherwise.
+// "plain", "fast" or "exact"; throws vri::Error naming the known ones otherwise.
 std::unique_ptr<SecondOrderBuilder> make_second_order_builder(const std::string& name);
 
 // The (s_f, s_m, s_b, l) table of preint2-dual: M slices at lengths

@@ -21,7 +21,7 @@ struct TableRequest {
   double length = 1;                  // slab length, world units
   std::optional<int> lengths;         // order 1: M lengths (with max_length)
   std::optional<double> max_length;
-  std::optional<std::string> builder; // order 1: brute, incremental (default), sliced, engel, exact; order 2: plain, fast (default)
+  std::optional<std::string> builder; // order 1: brute, incremental (default), sliced, engel, exact; order 2: plain, fast (default), exact
   std::optional<int> iterations;      // order 2: chords per slab (default kDefaultSecondOrderIterations)
   int steps = 0;                      // sliced: integration steps (0: 2N)
   std::string accumulation = "fp32";  // sliced: 8bit, 12bit, fp16, fp32

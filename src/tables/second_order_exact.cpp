@@ -1,0 +1,62 @@
+#include "vri/tables/second_order_exact.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "vri/core/error.hpp"
+#include "vri/tables/table_builder.hpp"
+
+namespace vri {
+
+namespace {
+
+double difference(const SlabRgba& a, const SlabRgba& b) {
+  return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
+}
+
+double difference(const SecondOrderWeights& a, const SecondOrderWeights& b) {
+  return std::max({difference(a.full, b.full), difference(a.middle, b.middle), difference(a.back, b.back)});
+}
+
+}  // namespace
+
+SecondOrderWeights exact_second_order_entry(const DiscreteTf& tf, double u_f, double u_m, double u_b,
+                                            double length) {
+  int k = 64;
+  SecondOrderWeights e = second_order_weighted_entry(tf, u_f, u_m, u_b, length, k);
+  while (k < kMaxSecondOrderIterations) {
+    k *= 2;
+    const SecondOrderWeights next = second_order_weighted_entry(tf, u_f, u_m, u_b, length, k);
+    const double change = difference(next, e);
+    e = next;
+    if (change <= ExactSecondOrderBuilder::kTolerance) break;
+  }
+  return e;
+}
+
+SecondOrderTable ExactSecondOrderBuilder::build(const DiscreteTf& tf, double length, int) const {
+  return build_weighted(tf, length, kMaxSecondOrderIterations).full;
+}
+
+SecondOrderWeightedTables ExactSecondOrderBuilder::build_weighted(const DiscreteTf& tf, double length, int) const {
+  check_slab_length(length);
+  const int n = tf.size();
+  if (n > kMaxSize)
+    throw Error("the exact second-order builder integrates every entry to 1e-7 and takes tables up to " +
+                std::to_string(kMaxSize) + " a side, got " + std::to_string(n) + "; use plain or fast");
+  SecondOrderWeightedTables t(tf.axis(), length, kMaxSecondOrderIterations);
+  tbb::parallel_for(0, n, [&](int f) {
+    for (int m = 0; m < n; ++m)
+      for (int b = 0; b < n; ++b) {
+        const SecondOrderWeights w = exact_second_order_entry(tf, f, m, b, length);
+        store(t.full.entry(f, m, b), w.full);
+        store(t.middle.entry(f, m, b), w.middle);
+        store(t.back.entry(f, m, b), w.back);
+      }
+  });
+  return t;
+}
+
+}  // namespace vri
