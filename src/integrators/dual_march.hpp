@@ -12,6 +12,7 @@
 #include "ray_steps.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/tables/second_order_float_lookup.hpp"
+#include "vri/tables/slab_table.hpp"
 #include "vri/volume/cell_traversal.hpp"
 #include "vri/volume/empty_space.hpp"
 #include "vri/volume/grid_volume.hpp"
@@ -62,11 +63,9 @@ class DualFloatLookup {
     SecondOrderFloatLookup::Spot lo, hi;
   };
   Spot find(double length, float s_f, float s_m, float s_b) const {
-    const int m = static_cast<int>(slices_.size());
-    const double u = std::clamp(length / max_length_, 0.0, 1.0) * (m - 1);
-    const int i = std::min(static_cast<int>(u), m - 2);
-    const std::array<FloatAxis::Place, 3> p = {slices_[i].place(s_f), slices_[i].place(s_m), slices_[i].place(s_b)};
-    return {i, static_cast<float>(u - i), slices_[i].find(p), slices_[i + 1].find(p)};
+    const LengthBracket l = length_bracket(length, max_length_, static_cast<int>(slices_.size()));
+    const std::array<FloatAxis::Place, 3> p = {slices_[l.i].place(s_f), slices_[l.i].place(s_m), slices_[l.i].place(s_b)};
+    return {l.i, static_cast<float>(l.w), slices_[l.i].find(p), slices_[l.i + 1].find(p)};
   }
   // Table k: 0 the unweighted (full) one, 1 middle, 2 back.
   Float4 blend(const Spot& spot, int k = 0) const {

@@ -48,8 +48,7 @@ std::vector<float> LengthTable::data() const {
 }
 
 Rgba LengthTable::lookup(double length, double s_f, double s_b) const {
-  const int m = static_cast<int>(slices_.size());
-  const Bracket l = bracket(std::clamp(length / max_length_, 0.0, 1.0) * (m - 1), m);
+  const LengthBracket l = length_bracket(length, max_length_, static_cast<int>(slices_.size()));
   const Rgba lo = slices_[l.i].lookup(s_f, s_b), hi = slices_[l.i + 1].lookup(s_f, s_b);
   Rgba out;
   for (int c = 0; c < 4; ++c) out[c] = (1 - l.w) * lo[c] + l.w * hi[c];

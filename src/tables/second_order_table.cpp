@@ -65,13 +65,10 @@ SecondOrderLengthTable::SecondOrderLengthTable(std::vector<SecondOrderTable> sli
 }
 
 Rgba SecondOrderLengthTable::lookup(double length, double s_f, double s_m, double s_b) const {
-  const int m = static_cast<int>(slices_.size());
-  const double u = std::clamp(length / max_length_, 0.0, 1.0) * (m - 1);
-  const int i = std::min(static_cast<int>(u), m - 2);
-  const double w = u - i;
-  const Rgba lo = slices_[i].lookup(s_f, s_m, s_b), hi = slices_[i + 1].lookup(s_f, s_m, s_b);
+  const LengthBracket l = length_bracket(length, max_length_, static_cast<int>(slices_.size()));
+  const Rgba lo = slices_[l.i].lookup(s_f, s_m, s_b), hi = slices_[l.i + 1].lookup(s_f, s_m, s_b);
   Rgba out;
-  for (int c = 0; c < 4; ++c) out[c] = (1 - w) * lo[c] + w * hi[c];
+  for (int c = 0; c < 4; ++c) out[c] = (1 - l.w) * lo[c] + l.w * hi[c];
   return out;
 }
 

@@ -27,6 +27,7 @@
 #include "vri/core/zeroed_floats.hpp"
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/slab_rgba.hpp"
+#include "vri/tables/slab_table.hpp"  // length_bracket
 
 namespace vri {
 
