@@ -120,7 +120,7 @@ Runner add_render_command(CLI::App& app) {
                   "riemann, preint1, preint2, preint2-dual: stop a ray once its transmittance is below this (0: off)");
   cmd->add_flag("--no-skip", args->no_skip,
                 "riemann, preint1, preint2, preint2-dual: march through empty space too (the plain path)");
-  cmd->add_flag("--double", args->double_math, "riemann, preint1, preint2: sample, look up and composite in double (the reference of their float paths)");
+  cmd->add_flag("--double", args->double_math, "riemann, preint1, preint2, preint2-dual: sample, look up and composite in double (the reference of their float paths)");
   cmd->add_option("--width", args->overrides.width, "Image width in pixels");
   cmd->add_option("--height", args->overrides.height, "Image height in pixels");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores; at most 1024)");
