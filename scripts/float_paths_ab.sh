@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # float_paths_ab.sh BUILD_DIR [REPEATS]: the float paths of riemann, preint1 and
 # preint2 (packets of 8 rays with AVX2) against their double paths (--double),
-# unlit on neghip, engine and bonsai, lit on neghip_lit and fuel_lit in both
+# unlit on neghip, engine, bonsai and neghip's opaque and spiky transfer
+# functions, lit on neghip_lit and fuel_lit in both
 # modes (`interpolated` as the scenes say, `sampled` in a copy of the scene,
 # deleted after), 512x512, step 1, one thread.
 # Each render REPEATS times (default 5), float and double interleaved; prints
@@ -21,7 +22,7 @@ done
 cpu_ms() { grep -o "CPU [0-9.e-]* s" | awk '{printf "%.1f", $2 * 1000}'; }
 echo "| scene | method | double CPU ms | float CPU ms | double / float | max difference |"
 echo "|---|---|---|---|---|---|"
-for scene in neghip engine bonsai .ab_neghip_lit_sampled neghip_lit .ab_fuel_lit_sampled fuel_lit; do
+for scene in neghip engine bonsai neghip_opaque neghip_spike .ab_neghip_lit_sampled neghip_lit .ab_fuel_lit_sampled fuel_lit; do
   for method in riemann preint1 preint2; do
     best_d=; best_f=
     for _ in $(seq "$repeats"); do

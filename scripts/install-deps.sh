@@ -8,7 +8,13 @@ pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1
       clang libclang-rt-14-dev  # clang + libFuzzer: the fuzz step (scripts/fuzz.sh)
       # the Python module (python/), its tests, examples/ and its notebook
       python3-dev pybind11-dev python3-pybind11 python3-pytest python3-matplotlib
-      jupyter-nbconvert python3-ipykernel)
+      jupyter-nbconvert python3-ipykernel
+      # the viewer (viewer/): Boost.Beast, JPEG frames, and its browser test's Chromium
+      libboost-dev libturbojpeg0-dev chromium)
+# The browser test's driver (puppeteer-core) comes from npm: node and npm from
+# Debian unless the image has a node of its own.
+command -v node >/dev/null || pkgs+=(nodejs)
+command -v npm >/dev/null || pkgs+=(npm)
 # --vtk: also what the VTK side-by-side scripts need (scripts/vtk_*side_by_side.py).
 if [ "${1:-}" = --vtk ]; then pkgs+=(python3-vtk9 xvfb xauth); fi
 missing=()

@@ -3,9 +3,15 @@
 # suite three times - a normal Release build, the same with the x86-64 SIMD
 # code off (VRI_SIMD=OFF, docs/PORTABILITY.md), then AddressSanitizer + UBSan -
 # then run every parser's libFuzzer harness for a bounded time (FUZZ_SECONDS, 10 s each).
+# The viewer's browser test runs in each build (its screenshots in BUILD/viewer_e2e).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
+# The viewer's browser test drives Chromium with puppeteer-core, the one npm
+# package (viewer/tests/e2e/package-lock.json); CMake registers the test when it is there.
+if [ ! -d viewer/tests/e2e/node_modules/puppeteer-core ]; then
+  (cd viewer/tests/e2e && npm ci --no-audit --no-fund --loglevel=error)
+fi
 jobs=$(nproc)
 # ccache lets the VRI_SIMD=OFF build reuse the Release build's objects: only
 # the files that include src/core/simd.hpp compile again.

@@ -13,5 +13,6 @@ Runner add_render_command(CLI::App& app);
 Runner add_compare_command(CLI::App& app);
 Runner add_table_command(CLI::App& app);
 Runner add_ray_command(CLI::App& app);
+Runner add_view_command(CLI::App& app);
 
 }  // namespace vri::cli

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   vri::cli::Runner compare = vri::cli::add_compare_command(app);
   vri::cli::Runner table = vri::cli::add_table_command(app);
   vri::cli::Runner ray = vri::cli::add_ray_command(app);
+  vri::cli::Runner view = vri::cli::add_view_command(app);
   // Global, accepted after the subcommand too (fallthrough).
   std::string max_memory;
   app.add_option("--max-memory", max_memory,
@@ -57,6 +58,7 @@ int main(int argc, char** argv) {
     const vri::cli::Runner& run = app.got_subcommand("render")    ? render
                                   : app.got_subcommand("compare") ? compare
                                   : app.got_subcommand("table")   ? table
+                                  : app.got_subcommand("view")    ? view
                                                                   : ray;
     const int code = run();
     if (code == 0) outputs.commit();

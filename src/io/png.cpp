@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include "vri/core/error.hpp"
 #include "vri/io/file_io.hpp"
@@ -21,19 +22,25 @@ void append_bytes(png_structp png, png_bytep data, png_size_t length) {
 
 }  // namespace
 
-void write_png(const std::filesystem::path& path, const Image& image, Vec3 background) {
+std::vector<std::uint8_t> composite_rgba8(const Image& image, Vec3 background) {
   const int W = image.width(), H = image.height();
-  std::vector<unsigned char> rgba(std::size_t(W) * H * 4);
+  std::vector<std::uint8_t> rgba(std::size_t(W) * H * 4);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       const float* p = image.pixel(x, y);
-      unsigned char* q = rgba.data() + (std::size_t(y) * W + x) * 4;
+      std::uint8_t* q = rgba.data() + (std::size_t(y) * W + x) * 4;
       for (int c = 0; c < 3; ++c) {
         const double v = std::clamp(double(p[c]) + (1.0 - p[3]) * background[c], 0.0, 1.0);
-        q[c] = static_cast<unsigned char>(std::lround(std::isnan(v) ? 0.0 : v * 255.0));
+        q[c] = static_cast<std::uint8_t>(std::lround(std::isnan(v) ? 0.0 : v * 255.0));
       }
       q[3] = 255;
     }
+  return rgba;
+}
+
+std::vector<std::byte> encode_png(std::span<const std::uint8_t> pixels, int width, int height, int channels) {
+  if (channels != 1 && channels != 4) throw Error("PNG: 1 or 4 channels, not " + std::to_string(channels));
+  if (pixels.size() != std::size_t(width) * height * channels) throw Error("PNG: pixel count does not match the size");
   std::vector<std::byte> encoded;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
@@ -43,16 +50,29 @@ void write_png(const std::filesystem::path& path, const Image& image, Vec3 backg
   }
   if (setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    throw Error("libpng failed to encode '" + path.string() + "'");
+    throw Error("libpng failed to encode an image");
   }
   png_set_write_fn(png, &encoded, append_bytes, nullptr);
-  png_set_IHDR(png, info, W, H, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-               PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, width, height, 8, channels == 4 ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_GRAY,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  // Fast over small: the viewer sends every final frame as this PNG, and zlib's
+  // default level with libpng's adaptive filters took 30 ms for 512 x 512.
+  png_set_compression_level(png, 1);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
   png_write_info(png, info);
-  for (int y = 0; y < H; ++y) png_write_row(png, rgba.data() + std::size_t(y) * W * 4);
+  for (int y = 0; y < height; ++y)
+    png_write_row(png, const_cast<png_bytep>(pixels.data() + std::size_t(y) * width * channels));
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
-  write_file_atomically(path, encoded);
+  return encoded;
+}
+
+std::vector<std::byte> encode_png(const Image& image, Vec3 background) {
+  return encode_png(composite_rgba8(image, background), image.width(), image.height(), 4);
+}
+
+void write_png(const std::filesystem::path& path, const Image& image, Vec3 background) {
+  write_file_atomically(path, encode_png(image, background));
 }
 
 }  // namespace vri

@@ -258,6 +258,7 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, TileRaster::S
       std::vector<Fragment> frags, by_pixel;
       std::vector<std::size_t> start;
       for (int tile = r.begin(); tile != r.end(); ++tile) {
+        if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;
         const int x0 = (tile % tiles_x) * ts, y0 = (tile / tiles_x) * ts;
         const int x1 = std::min(W, x0 + ts), y1 = std::min(H, y0 + ts), tw = x1 - x0;
         frags.clear();
@@ -288,6 +289,7 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, TileRaster::S
       }
     });
   });
+  throw_if_cancelled(options);
   return image;
 }
 

@@ -19,6 +19,7 @@ Image render(const Camera& camera, const Integrator& integrator, const RenderOpt
   Image image(W, H);
   auto render_tiles = [&](const tbb::blocked_range<int>& range) {
     for (int t = range.begin(); t != range.end(); ++t) {
+      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;
       const int x0 = (t % tiles_x) * ts, y0 = (t / tiles_x) * ts;
       const int x1 = std::min(W, x0 + ts);
       std::vector<Ray> rays(x1 - x0);
@@ -32,7 +33,12 @@ Image render(const Camera& camera, const Integrator& integrator, const RenderOpt
   };
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
   arena.execute([&] { tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), render_tiles); });
+  throw_if_cancelled(options);
   return image;
+}
+
+void throw_if_cancelled(const RenderOptions& options) {
+  if (options.cancel && options.cancel->load()) throw RenderCancelled();
 }
 
 }  // namespace vri

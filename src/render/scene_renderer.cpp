@@ -57,13 +57,16 @@ std::string SceneRenderer::method_name() const {
   return integrator_ ? std::string(integrator_->name()) : scene_.method.name;
 }
 
-Image SceneRenderer::render(const RenderOptions& options) const {
+Image SceneRenderer::render(const RenderOptions& options) const { return render(camera_, options); }
+
+Image SceneRenderer::render(const Camera& camera, const RenderOptions& options) const {
+  if (&camera != &camera_) check_work(scene_, camera);
   const Projected* p = projected_.get();
   const Image image =
-      !p            ? vri::render(camera_, *integrator_, options)
-      : p->cylinder ? render_projected(camera_, scene_.mesh(), *p->cylinder, options, scene_.lighting,
+      !p            ? vri::render(camera, *integrator_, options)
+      : p->cylinder ? render_projected(camera, scene_.mesh(), *p->cylinder, options, scene_.lighting,
                                        p->weighted_cylinder ? &*p->weighted_cylinder : nullptr)
-                    : render_projected(camera_, scene_.mesh(), *p->table, options, scene_.lighting, p->weighted.get());
+                    : render_projected(camera, scene_.mesh(), *p->table, options, scene_.lighting, p->weighted.get());
   refuse_non_finite(image, "the rendered image");
   return image;
 }

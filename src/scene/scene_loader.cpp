@@ -395,6 +395,10 @@ TransferFunction parse_transfer_function(std::string_view text, const std::strin
   return transfer_function_from(parse_json(text, source), Reader{source, ""}, false);
 }
 
+CameraSpec parse_camera(std::string_view text, const std::string& source) {
+  return camera_from(parse_json(text, source), Reader{source, ""});
+}
+
 TransferFunction load_transfer_function(const fs::path& path) {
   return parse_transfer_function(text_of(path), "transfer function '" + printable(path.string()) + "'");
 }

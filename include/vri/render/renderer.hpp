@@ -2,7 +2,10 @@
 // The renderer: one ray per pixel through the camera, integrated by any
 // Integrator, in square tiles spread over threads. Each pixel depends only on
 // its own ray, so the image is the same bytes for any thread count.
+#include <atomic>
+
 #include "vri/camera/camera.hpp"
+#include "vri/core/error.hpp"
 #include "vri/integrators/integrator.hpp"
 #include "vri/render/image.hpp"
 
@@ -11,7 +14,19 @@ namespace vri {
 struct RenderOptions {
   int threads = 0;     // 0: every core
   int tile_size = 16;  // pixels a side
+  // Set by another thread to stop the render between tiles (the viewer drops
+  // a frame the user will no longer see); render() then throws RenderCancelled.
+  const std::atomic<bool>* cancel = nullptr;
 };
+
+// Thrown by a render whose RenderOptions::cancel was set: no image.
+class RenderCancelled : public Error {
+ public:
+  RenderCancelled() : Error("the render was cancelled") {}
+};
+
+// Throws RenderCancelled if options.cancel is set (for renderers of their own, between tiles).
+void throw_if_cancelled(const RenderOptions& options);
 
 Image render(const Camera& camera, const Integrator& integrator, const RenderOptions& options = {});
 

@@ -32,6 +32,9 @@ class SceneRenderer {
   // The image; vri::Error if it holds NaN or infinity (refuse_non_finite),
   // so no caller writes one.
   Image render(const RenderOptions& options = {}) const;
+  // The same scene seen through another camera (its size and work checked as
+  // the scene's own): the viewer orbits and previews with the tables built once.
+  Image render(const Camera& camera, const RenderOptions& options = {}) const;
 
   // The method as an error-estimating integrator (adaptive), or vri::Error
   // saying that `what` (a flag or function name) needs adaptive.

@@ -44,5 +44,7 @@ Scene parse_scene(std::string_view json_text, Volume volume, const std::filesyst
 // A transfer function on its own: {"points": ...} or {"opacity_points": ..., "unit_distance": u}.
 TransferFunction load_transfer_function(const std::filesystem::path& path);
 TransferFunction parse_transfer_function(std::string_view json_text, const std::string& source_name = "transfer function");
+// A "camera" block on its own (SPEC §6), checked as in a scene; errors name `source_name`: camera.
+CameraSpec parse_camera(std::string_view json_text, const std::string& source_name = "scene");
 
 }  // namespace vri

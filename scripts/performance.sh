@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# performance.sh OUT_DIR [BUILD_DIR]: re-runs every measurement of
+# docs/PERFORMANCE.md, one file per section in OUT_DIR (a section's file holds
+# its command's own output, the date and the load average at its start), so
+# the page is re-made from one command. PARTS (default: all, in this order)
+# picks sections. Needs a Release build (scripts/build.sh), python3-vtk9 and
+# Xvfb for the VTK parts (scripts/install-deps.sh --vtk), and `npm ci` in
+# viewer/tests/e2e for the viewer part. Takes about 20 minutes on the
+# project's 2-core machine; run it with nothing else busy.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:?usage: performance.sh OUT_DIR [BUILD_DIR]}; build=${2:-build}
+parts=" ${PARTS:-render tables lighting preint_render mesh vtk_mesh vtk_grid float_paths skipping macro_cells scaling brick_layout viewer} "
+mkdir -p "$out"
+stamp() { echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"; }
+want() { [[ "$parts" == *" $1 "* ]]; }
+display=
+vtk_display() {  # one Xvfb for the VTK parts (xvfb-run has failed to connect here)
+  [ -n "$display" ] && return
+  Xvfb :55 -screen 0 1024x768x24 >/dev/null 2>&1 & xvfb=$!; trap 'kill $xvfb 2>/dev/null || true' EXIT
+  sleep 2; display=:55
+}
+if want render; then
+  { stamp; "$build/bench/bench_render" --benchmark_min_time=1; } >"$out/render.txt" 2>&1
+fi
+if want tables; then
+  { stamp; "$build/bench/bench_tables" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+      --benchmark_min_time=0.2; } >"$out/tables.txt" 2>&1
+fi
+if want lighting; then
+  { stamp; "$build/bench/bench_lighting" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true; } \
+    >"$out/lighting.txt" 2>&1
+fi
+if want preint_render; then
+  { stamp; "$build/bench/bench_preint_render" --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
+      --benchmark_report_aggregates_only=true; } >"$out/preint_render.txt" 2>&1
+fi
+if want mesh; then
+  { stamp; "$build/bench/bench_mesh" --benchmark_min_time=1; } >"$out/mesh.txt" 2>&1
+fi
+if want vtk_mesh; then
+  vtk_display
+  for s in blunt_fin blunt_fin_opaque; do
+    { stamp; DISPLAY=$display LP_NUM_THREADS=2 /usr/bin/python3 scripts/vtk_side_by_side.py "scenes/$s.json" 256 "$out/side"; } \
+      >"$out/vtk_mesh_$s.txt" 2>&1
+  done
+fi
+if want vtk_grid; then
+  vtk_display
+  for s in neghip engine bonsai neghip_opaque neghip_spike; do
+    { stamp; DISPLAY=$display LP_NUM_THREADS=2 /usr/bin/python3 scripts/vtk_grid_side_by_side.py \
+        "scenes/$s.json" 512 "$out/side" --repeat 5; } >"$out/vtk_grid_$s.txt" 2>&1
+  done
+fi
+if want float_paths; then { stamp; bash scripts/float_paths_ab.sh "$build" 5; } >"$out/float_paths.txt" 2>&1; fi
+if want skipping; then { stamp; bash scripts/skipping_study.sh "$build" 3; } >"$out/skipping.txt" 2>&1; fi
+if want macro_cells; then { stamp; "$build/bench/bench_macro_cells"; } >"$out/macro_cells.txt" 2>&1; fi
+if want scaling; then { stamp; bash scripts/scaling_study.sh "$build" 3; } >"$out/scaling.txt" 2>&1; fi
+if want viewer; then { stamp; node viewer/bench/viewer_latency.mjs "$build/vri"; } >"$out/viewer.txt" 2>&1; fi
+if want brick_layout; then
+  { stamp; "$build/bench/bench_brick_layout" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true; } \
+    >"$out/brick_layout.txt" 2>&1
+fi

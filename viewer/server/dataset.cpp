@@ -1,0 +1,201 @@
+#include "dataset.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "scene_json.hpp"
+#include "vri/camera/framing.hpp"
+#include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
+
+namespace vri::viewer {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw FileError("cannot read '" + printable(file.string()) + "'");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Every "file" inside the volume block made absolute: the saved scene works from anywhere.
+void absolute_files(json& j, const fs::path& base) {
+  if (j.is_object()) {
+    for (auto& [key, value] : j.items()) {
+      if (key == "file" && value.is_string()) {
+        const fs::path p = value.get<std::string>();
+        value = fs::absolute(p.is_relative() ? base / p : p).lexically_normal().string();
+      } else {
+        absolute_files(value, base);
+      }
+    }
+  } else if (j.is_array()) {
+    for (auto& v : j) absolute_files(v, base);
+  }
+}
+
+struct Bounds {
+  Vec3 lo, hi;
+  double lo_value, hi_value;
+};
+
+Bounds bounds_of(const Volume& volume) {
+  if (const auto* g = std::get_if<GridVolume>(&volume))
+    return {g->box_lo(), g->box_hi(), g->min_value(), g->max_value()};
+  const TetMesh& m = std::get<TetMesh>(volume);
+  Bounds b{m.points().front(), m.points().front(), m.scalars().front(), m.scalars().front()};
+  for (const Vec3& p : m.points())
+    for (int a = 0; a < 3; ++a) {
+      b.lo[a] = std::min(b.lo[a], p[a]);
+      b.hi[a] = std::max(b.hi[a], p[a]);
+    }
+  for (const float s : m.scalars()) {
+    b.lo_value = std::min<double>(b.lo_value, s);
+    b.hi_value = std::max<double>(b.hi_value, s);
+  }
+  return b;
+}
+
+// The page's view of the volume: what it is, its range and box, the unit of the opacity axis.
+json describe(const Dataset& d, const Bounds& b) {
+  json v = {{"name", d.id},
+            {"range", {b.lo_value, b.hi_value}},
+            {"bounds", {{b.lo.x, b.lo.y, b.lo.z}, {b.hi.x, b.hi.y, b.hi.z}}},
+            {"json", d.volume_json}};
+  if (const auto* g = std::get_if<GridVolume>(&d.volume)) {
+    v["kind"] = "grid";
+    v["dims"] = g->dims();
+    v["unit_distance"] = g->voxel_unit();
+  } else {
+    const TetMesh& m = std::get<TetMesh>(d.volume);
+    v["kind"] = "mesh";
+    v["cells"] = m.tets().size();
+    // A mesh has no voxel: the edge of a cube of the mean cell volume.
+    const Vec3 e = b.hi - b.lo;
+    v["unit_distance"] = std::cbrt(std::max(e.x * e.y * e.z, 1e-300) / double(m.tets().size()));
+  }
+  return {{"volume", v}, {"histogram", histogram(d.volume)}};
+}
+
+// What the viewer renders with when nothing says otherwise: interactive and accurate.
+json default_method(const Volume& volume) {
+  return std::holds_alternative<GridVolume>(volume) ? json{{"name", "preint1"}, {"step", 1}}
+                                                    : json{{"name", "tet-raycast"}};
+}
+
+// The scene of a bare volume file: a grey ramp whose densest voxel stops half
+// the light over a tenth of the box's diagonal, the framing camera, the
+// method users of the volume's kind want first.
+std::string default_scene_text(const Volume& volume) {
+  const Bounds b = bounds_of(volume);
+  const double diagonal = std::max(length(b.hi - b.lo), 1e-9);
+  const double tau = std::log(2.0) / (0.1 * diagonal);
+  const double lo = b.lo_value, hi = b.hi_value > b.lo_value ? b.hi_value : b.lo_value + 1;
+  const json scene = {
+      {"transfer_function", {{"points", {{lo, 1, 1, 1, 0}, {hi, 1, 1, 1, tau}}}}},
+      {"camera", camera_json(frame_box(b.lo, b.hi))},
+      {"method", default_method(volume)}};
+  return scene.dump();
+}
+
+}  // namespace
+
+json histogram(const Volume& volume) {
+  const Bounds b = bounds_of(volume);
+  const double lo = b.lo_value, hi = b.hi_value, width = hi > lo ? hi - lo : 1;
+  std::vector<std::uint64_t> counts(256, 0);
+  auto add = [&](double s) { ++counts[std::min<std::size_t>(255, std::size_t((s - lo) / width * 256))]; };
+  if (const auto* g = std::get_if<GridVolume>(&volume))
+    g->visit([&](auto samples) {
+      for (const auto s : samples) add(double(s));
+    });
+  else
+    for (const float s : std::get<TetMesh>(volume).scalars()) add(s);
+  return {{"range", {lo, hi}}, {"counts", counts}};
+}
+
+std::shared_ptr<const Dataset> load_dataset(const fs::path& file, const std::string& id) {
+  const fs::path base = fs::absolute(file).parent_path();
+  std::string source = "'";  // appended, not "'" + ... (GCC 12's -Wrestrict misfires on that)
+  source.append(printable(file.string())).append("'");
+  json scene, volume_json;
+  std::optional<Volume> volume;
+  if (file.extension() == ".json") {
+    scene = json::parse(read_text(file), nullptr, false);
+    if (!scene.is_object() || !scene.contains("volume"))
+      throw Error("scene " + source + ": not a scene file (a JSON object with a 'volume')");
+    Scene loaded = load_scene(file);  // every check `vri render` makes
+    volume.emplace(std::move(loaded.volume));
+    volume_json = scene.at("volume");
+    absolute_files(volume_json, base);
+    scene.erase("volume");
+    scene["transfer_function"] = transfer_function_json(loaded.transfer_function);
+    scene["camera"] = camera_json(loaded.camera);
+    scene["lighting"] = lighting_json(loaded.lighting);
+    scene["background"] = {loaded.background.x, loaded.background.y, loaded.background.z};
+    // `exact` (named, or the default of a scene that names no method, SPEC §9)
+    // takes seconds a frame: the viewer opens such a scene with the fast method
+    // of its kind, and renders exact in the background as the error map's
+    // reference and the refinement.
+    if (loaded.method.name == "exact") scene["method"] = default_method(*volume);
+  } else {
+    volume_json = {{"file", fs::absolute(file).lexically_normal().string()}};
+    Scene loaded = parse_scene(json{{"volume", volume_json},
+                                    {"transfer_function", {{"points", {{0, 0, 0, 0, 0}}}}},
+                                    {"camera", {{"eye", {0, 0, 1}}, {"target", {0, 0, 0}}}}}
+                                   .dump(),
+                               base, "volume " + source);
+    volume.emplace(std::move(loaded.volume));
+    scene = json::parse(default_scene_text(*volume));
+    scene["lighting"] = lighting_json(Lighting{});
+    scene["background"] = {0, 0, 0};
+  }
+  auto d = std::make_shared<Dataset>(Dataset{id, base, std::move(*volume), std::move(volume_json), std::move(scene), {}});
+  d->description = describe(*d, bounds_of(d->volume));
+  return d;
+}
+
+DatasetCatalog::DatasetCatalog(const fs::path& given, const fs::path& bundled_dir) {
+  if (!given.empty()) entries_.push_back({given.stem().string(), given, nullptr});
+  std::error_code ec;
+  std::vector<fs::path> bundled;
+  if (!bundled_dir.empty() && fs::is_directory(bundled_dir, ec))
+    for (const auto& e : fs::directory_iterator(bundled_dir, ec))
+      if (e.path().extension() == ".json") bundled.push_back(e.path());
+  std::sort(bundled.begin(), bundled.end());
+  for (const fs::path& p : bundled) {
+    if (!given.empty() && fs::equivalent(p, given, ec)) continue;
+    std::string id = p.stem().string();
+    while (std::any_of(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.id == id; })) id += "_";
+    entries_.push_back({id, p, nullptr});
+  }
+  if (entries_.empty()) throw Error("no volume to show: give a scene or volume file");
+}
+
+json DatasetCatalog::list() const {
+  json out = json::array();
+  for (const Entry& e : entries_) out.push_back({{"id", e.id}, {"name", e.id}});
+  return out;
+}
+
+const std::string& DatasetCatalog::first_id() const { return entries_.front().id; }
+
+std::shared_ptr<const Dataset> DatasetCatalog::open(const std::string& id) {
+  std::lock_guard lock(mutex_);
+  for (Entry& e : entries_)
+    if (e.id == id) {
+      if (!e.loaded) e.loaded = load_dataset(e.file, e.id);
+      return e.loaded;
+    }
+  throw Error("no dataset '" + printable(id) + "' in the list");
+}
+
+}  // namespace vri::viewer
