@@ -1,4 +1,4 @@
-// Interpolated lighting for preint1 (docs/PERFORMANCE.md, "Pre-integrated lighting").
+// Interpolated lighting for preint1 (docs/PERFORMANCE.md, "Pre-integration tables").
 //   BM_Tables/<kind>/N/threads   the unweighted incremental table, or the two
 //                                packed weighted tables (four weighted
 //                                integrals, Lum et al. 2004 §4.3), N x N,

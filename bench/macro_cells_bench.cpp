@@ -1,4 +1,4 @@
-// Empty-space skipping set-up times (docs/PERFORMANCE.md, "Interactive speed (issue 8)"),
+// Empty-space skipping set-up times (docs/PERFORMANCE.md, "Transfer-function edits"),
 // one thread:
 //   BM_MacroCells/N          min/max macro cells of an N^3 volume (once per volume)
 //   BM_Reclassify/N          after a transfer-function edit: ZeroOpacity of the

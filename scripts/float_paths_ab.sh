@@ -8,7 +8,7 @@
 # Each render REPEATS times (default 5), float and double interleaved; prints
 # the fastest render CPU time vri reports (not loading or building tables)
 # and the largest difference between the two images (docs/PERFORMANCE.md,
-# "Fourth slice").
+# "Float paths and packets").
 set -euo pipefail
 build=${1:?usage: float_paths_ab.sh BUILD_DIR [REPEATS]}
 repeats=${2:-5}

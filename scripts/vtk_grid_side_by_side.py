@@ -2,7 +2,7 @@
 """vri's ray casters beside VTK's vtkFixedPointVolumeRayCastMapper on a regular
 grid: the same volume, transfer function and camera, rendered back to back in
 one run; time per frame (wall and CPU) and error against vri's `exact`
-(issue 8; docs/PERFORMANCE.md, "Interactive speed (issue 8)").
+(docs/PERFORMANCE.md, "Regular grids beside VTK").
 
 Needs Debian's python3-vtk9 and, without a display, Xvfb:
   xvfb-run -a -s "-screen 0 1024x768x24" /usr/bin/python3 scripts/vtk_grid_side_by_side.py \

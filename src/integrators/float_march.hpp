@@ -1,6 +1,6 @@
 #pragma once
 // The float paths of preint1 and preint2 (issue 8; docs/PERFORMANCE.md,
-// "Interactive speed"): march_uniform_slabs with the slab policies
+// "Float paths and packets"): march_uniform_slabs with the slab policies
 // (ray_steps.hpp, slab_policies.hpp: unlit, sampled, interpolated) on the
 // same sample positions, with the per-sample work in float. Sample i sits at grid position u0 + i du (u0 the
 // ray's entry, du = h dir / spacing, in double: one multiply-add per axis, the

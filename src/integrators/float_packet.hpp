@@ -1,6 +1,6 @@
 #pragma once
 // Packets of rays for the float paths of riemann, preint1 and preint2, unlit and lit (issue 8;
-// docs/PERFORMANCE.md, "Interactive speed"): kPacket neighbouring rays
+// docs/PERFORMANCE.md, "Float paths and packets"): kPacket neighbouring rays
 // marched together with AVX2, one ray a lane. Each lane keeps its own sample
 // positions u0 + i du, leaps (its own macro-cell queries) and partial last
 // slab; per slab the 8 lanes' new samples are interpolated, placed on the

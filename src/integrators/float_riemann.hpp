@@ -1,5 +1,5 @@
 #pragma once
-// riemann's float path (issue 8; docs/PERFORMANCE.md, "Interactive speed"),
+// riemann's float path (issue 8; docs/PERFORMANCE.md, "Float paths and packets"),
 // unlit and lit (float_shading.hpp):
 // RiemannIntegrator's sum (riemann.hpp) on the same sample positions, with the
 // per-sample work in float. Sample k sits at grid position u0 + k du (in

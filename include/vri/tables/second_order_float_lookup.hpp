@@ -1,6 +1,6 @@
 #pragma once
 // SecondOrderFloatLookup: SecondOrderTable::lookup for preint2's float path
-// (issue 8; docs/PERFORMANCE.md, "Interactive speed"), the second-order
+// (issue 8; docs/PERFORMANCE.md, "Float paths and packets"), the second-order
 // counterpart of FloatLookup: each sample is placed on the table axis once
 // (FloatAxis), and a slab's eight entries (s_f, s_m, s_b and their upper
 // neighbours) are blended as 4-float vectors, trilinear in the continuous

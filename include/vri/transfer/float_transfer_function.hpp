@@ -1,7 +1,7 @@
 #pragma once
 // FloatTransferFunction: TransferFunction's evaluation (SPEC §3) in float, for
 // riemann's float path and its packets of rays (issue 8; docs/PERFORMANCE.md,
-// "Interactive speed"). The same segments (TfSegment: v = ref + slope (s - s_ref)
+// "Float paths and packets"). The same segments (TfSegment: v = ref + slope (s - s_ref)
 // on [breakpoint i-1, breakpoint i)) with their numbers rounded to float; the
 // segment of a scalar is found from a uniform grid of kBins bins over the
 // breakpoints' span, which names a segment near it, and a short walk to the
