@@ -20,9 +20,12 @@
 #include "io/gzip.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/memory_limit.hpp"
+#include "vri/io/metaimage.hpp"
+#include "vri/io/npy.hpp"
 #include "vri/io/nrrd.hpp"
 #include "vri/io/raw_volume.hpp"
 #include "vri/io/volvis_dat.hpp"
+#include "vri/io/vti.hpp"
 #include "vri/io/vtk_legacy.hpp"
 #include "vri/io/vtu.hpp"
 #include "vri/scene/scene.hpp"
@@ -93,9 +96,22 @@ inline void nrrd_gzip(std::span<const std::byte> data) {
 
 inline void volvis_dat(std::span<const std::byte> data) { read_volvis_dat(file_of(data, "f.dat")); }
 
+// MetaImage: the input is an .mha (header and data); a header naming a data
+// file finds d.raw and d.raw.gz in the work folder.
+inline void metaimage(std::span<const std::byte> data) { parse_metaimage(data, work_dir(), "fuzz.mha"); }
+
+inline void npy_volume(std::span<const std::byte> data) { parse_npy_volume(data, "fuzz.npy"); }
+
 inline void vtk_legacy(std::span<const std::byte> data) { parse_vtk_legacy(data, "", "fuzz.vtk"); }
 
 inline void vtu(std::span<const std::byte> data) { parse_vtu(data, "", "fuzz.vtu"); }
+
+inline void vti(std::span<const std::byte> data) { parse_vti(data, "", "fuzz.vti"); }
+
+inline void vtk_structured_points(std::span<const std::byte> data) {
+  vtk_legacy_is_structured_points(data);
+  parse_vtk_structured_points(data, "", "fuzz.vtk");
+}
 
 inline void scene(std::span<const std::byte> data) { parse_scene(text_of(data), work_dir(), "fuzz scene"); }
 
@@ -114,7 +130,7 @@ inline void run(const std::function<void(std::span<const std::byte>)>& target, c
 inline const std::map<std::string, std::function<void(std::span<const std::byte>)>>& targets() {
   static const std::map<std::string, std::function<void(std::span<const std::byte>)>> all = {
       {"raw", raw},         {"nrrd", nrrd}, {"nrrd_gzip", nrrd_gzip}, {"volvis_dat", volvis_dat},
-      {"vtk_legacy", vtk_legacy}, {"vtu", vtu}, {"scene", scene},    {"transfer_function", transfer_function}};
+      {"vtk_legacy", vtk_legacy}, {"vtu", vtu}, {"vti", vti}, {"vtk_structured_points", vtk_structured_points}, {"metaimage", metaimage}, {"npy_volume", npy_volume}, {"scene", scene},    {"transfer_function", transfer_function}};
   return all;
 }
 

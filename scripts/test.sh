@@ -23,6 +23,8 @@ bash scripts/build.sh build "${launcher[@]}" -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BE
 (cd build && ctest --output-on-failure -j "$jobs")
 bash scripts/build.sh build-nosimd "${launcher[@]}" -DVRI_SIMD=OFF -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=OFF
 (cd build-nosimd && ctest --output-on-failure -j "$jobs")
-bash scripts/build.sh build-asan -DVRI_SANITIZE=ON -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+# -g1: line tables (stack traces keep file:line) at less compile time than -g.
+bash scripts/build.sh build-asan "${launcher[@]}" -DVRI_SANITIZE=ON -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=OFF \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j "$jobs")
 bash scripts/fuzz.sh "${FUZZ_SECONDS:-10}" build-fuzz

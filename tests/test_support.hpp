@@ -80,4 +80,19 @@ inline void write_bytes(const std::filesystem::path& p, const std::vector<unsign
 
 inline std::string source_path(const std::string& rel) { return std::string(VRI_SOURCE_DIR) + "/" + rel; }
 
+// The file names of the bundled scenes (scenes/*.json), sorted; and a test
+// name made from one ("neghip_lit.json" -> "neghip_lit").
+inline std::vector<std::string> bundled_scenes() {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(source_path("scenes")))
+    if (e.path().extension() == ".json") names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+inline std::string scene_test_name(std::string file) {
+  file = file.substr(0, file.size() - 5);
+  std::replace(file.begin(), file.end(), '-', '_');
+  return file;
+}
+
 }  // namespace vri::test

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   vri::cli::Runner table = vri::cli::add_table_command(app);
   vri::cli::Runner ray = vri::cli::add_ray_command(app);
   vri::cli::Runner view = vri::cli::add_view_command(app);
+  vri::cli::Runner info = vri::cli::add_info_command(app);
   // Global, accepted after the subcommand too (fallthrough).
   std::string max_memory;
   app.add_option("--max-memory", max_memory,
@@ -59,6 +60,7 @@ int main(int argc, char** argv) {
                                   : app.got_subcommand("compare") ? compare
                                   : app.got_subcommand("table")   ? table
                                   : app.got_subcommand("view")    ? view
+                                  : app.got_subcommand("info")    ? info
                                                                   : ray;
     const int code = run();
     if (code == 0) outputs.commit();

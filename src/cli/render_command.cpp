@@ -31,7 +31,7 @@ namespace {
 struct RenderArgs {
   std::string scene, output;
   SceneOverrides overrides;
-  bool no_skip = false, double_math = false;
+  bool no_skip = false, double_math = false, fit = false;
   int threads = 0;
   std::optional<std::string> error_estimate, trace;
   std::vector<int> trace_pixel;
@@ -61,6 +61,7 @@ int run_render(RenderArgs args) {
   Scene scene = load_scene(args.scene);
   if (args.no_skip) args.overrides.skip_empty = false;
   if (args.double_math) args.overrides.float_math = false;
+  if (args.fit) args.overrides.fit = true;
   apply_overrides(scene, args.overrides);
   if (args.error_estimate && std::filesystem::path(*args.error_estimate).extension() != ".npy")
     throw Error("--error-estimate '" + *args.error_estimate + "' must end in .npy");
@@ -123,6 +124,11 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_flag("--double", args->double_math, "riemann, preint1, preint2, preint2-dual: sample, look up and composite in double (the reference of their float paths)");
   cmd->add_option("--width", args->overrides.width, "Image width in pixels");
   cmd->add_option("--height", args->overrides.height, "Image height in pixels");
+  cmd->add_flag("--fit", args->fit, "Frame the volume's box (as ParaView's reset camera), then apply the motions");
+  cmd->add_option("--azimuth", args->overrides.azimuth, "Turn the eye about the up vector (degrees, VTK's Azimuth)");
+  cmd->add_option("--elevation", args->overrides.elevation, "Raise the eye towards the up vector (degrees)");
+  cmd->add_option("--roll", args->overrides.roll, "Turn the up vector about the view direction (degrees)");
+  cmd->add_option("--zoom", args->overrides.zoom, "Magnify by this factor (VTK's Zoom: narrows the field of view)");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores; at most 1024)");
   cmd->add_option("--max-samples", args->overrides.max_samples, "Cap on samples per ray (default 1e7; scene method.max_samples)");
   cmd->add_option("--max-work", args->overrides.max_work, "Cap on samples per ray x pixels (default 2e10; scene method.max_work)");

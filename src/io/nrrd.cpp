@@ -1,3 +1,4 @@
+// NRRD volumes, read and written (nrrd.hpp); the format: https://teem.sourceforge.net/nrrd/format.html
 #include "vri/io/nrrd.hpp"
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "grid_samples.hpp"
 #include "gzip.hpp"
 #include "vri/core/error.hpp"
 #include "vri/io/file_io.hpp"
@@ -20,17 +22,6 @@ namespace vri {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string trim(std::string s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  const auto e = s.find_last_not_of(" \t\r");
-  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-}
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
 
 ScalarType nrrd_type(const std::string& raw) {
   static const std::map<std::string, ScalarType> names = {
@@ -49,7 +40,7 @@ ScalarType nrrd_type(const std::string& raw) {
       {"uint32", ScalarType::UInt32},      {"uint32_t", ScalarType::UInt32},
       {"float", ScalarType::Float32},      {"double", ScalarType::Float64},
   };
-  const auto it = names.find(lower(raw));
+  const auto it = names.find(to_lower(raw));
   if (it == names.end()) throw Error("NRRD type '" + raw + "' is not supported");
   return it->second;
 }
@@ -62,7 +53,7 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& fi
   std::istringstream in(cleaned);
   std::string tok;
   while (in >> tok) {
-    if (lower(tok) == "none" || lower(tok) == "nan") {
+    if (to_lower(tok) == "none" || to_lower(tok) == "nan") {
       out.push_back(std::nan(""));
       continue;
     }
@@ -78,7 +69,7 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& fi
 // A whole-token integer in [lo, hi]; anything else (fractions, 1e300, junk)
 // is refused naming the field, instead of a wrapping or undefined cast.
 long long parse_integer(const std::string& text, const std::string& field, long long lo, long long hi) {
-  const std::string t = trim(text);
+  const std::string t = trim_blanks(text);
   long long v = 0;
   const auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
   if (ec != std::errc() || p != t.data() + t.size() || t.empty() || v < lo || v > hi)
@@ -95,27 +86,6 @@ std::vector<std::int64_t> parse_integers(const std::string& text, const std::str
   return out;
 }
 
-// The detached data file named by a header, resolved against the header's
-// folder; absolute paths and paths that leave that folder (.., symlinks) are
-// refused unless `allow_outside` (a header from a stranger must not read
-// arbitrary files).
-fs::path detached_data_path(const fs::path& header, const std::string& name, bool allow_outside, const std::string& where) {
-  const fs::path dir = header.parent_path().empty() ? fs::path(".") : header.parent_path();
-  if (name.empty()) throw Error(where + ": 'data file' is empty");
-  const fs::path named(name);
-  if (allow_outside) return named.is_absolute() ? named : dir / named;
-  const std::string refuse = where + ": 'data file: " + name +
-                             "' is outside the header's folder; set \"allow_outside_paths\": true in the "
-                             "scene's volume to allow it";
-  if (named.is_absolute() || *named.lexically_normal().begin() == "..") throw Error(refuse);
-  std::error_code ec;
-  const fs::path real_dir = fs::weakly_canonical(dir, ec), real = fs::weakly_canonical(dir / named, ec);
-  if (ec) return dir / named;  // missing: reported when it is opened
-  const fs::path rel = real.lexically_relative(real_dir);
-  if (rel.empty() || *rel.begin() == "..") throw Error(refuse);
-  return dir / named;
-}
-
 // Splits "(a,b,c) (d,e,f) none" into vectors (none -> empty).
 std::vector<std::vector<double>> parse_vectors(const std::string& text, const std::string& field) {
   std::vector<std::vector<double>> out;
@@ -126,7 +96,7 @@ std::vector<std::vector<double>> parse_vectors(const std::string& text, const st
       if (close == std::string::npos) throw Error("NRRD field '" + field + "' is malformed");
       out.push_back(parse_numbers(text.substr(i + 1, close - i - 1), field));
       i = close + 1;
-    } else if (lower(text.substr(i, 4)) == "none") {
+    } else if (to_lower(text.substr(i, 4)) == "none") {
       out.emplace_back();
       i += 4;
     } else {
@@ -134,6 +104,28 @@ std::vector<std::vector<double>> parse_vectors(const std::string& text, const st
     }
   }
   return out;
+}
+
+// The spacing along grid axis `axis` from its 'space directions' vector `d`
+// ("none": spacing 1). vri grids are axis-aligned, so `d` must lie along that
+// axis; a negative entry runs the axis backwards (`flip`), and the reader
+// mirrors the samples so that each lands where the file puts it.
+double axis_step(const std::vector<double>& d, int axis, const std::string& where, bool& flip) {
+  if (d.empty()) return 1;
+  std::ostringstream text;
+  text << '(';
+  for (std::size_t c = 0; c < d.size(); ++c) text << (c ? "," : "") << d[c];
+  text << ')';
+  if (d.size() != 3) throw Error(where + ": 'space directions' vector " + text.str() + " needs 3 components");
+  const double along = d[axis];
+  if (!std::isfinite(along) || along == 0)
+    throw Error(where + ": 'space directions' vector " + text.str() + " has no step along its axis");
+  for (int b = 0; b < 3; ++b)
+    if (b != axis && !(std::abs(d[b]) <= 1e-6 * std::abs(along)))
+      throw Error(where + ": 'space directions' vector " + text.str() +
+                  " is not along its axis; vri reads axis-aligned grids only (resample the volume)");
+  flip = along < 0;
+  return std::abs(along);
 }
 
 }  // namespace
@@ -160,7 +152,7 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
     if (line.find(":=") != std::string::npos) continue;  // key/value pairs: ignored
     const auto colon = line.find(": ");
     if (colon == std::string::npos) throw Error(where + " has a malformed header line '" + line + "'");
-    fields[lower(trim(line.substr(0, colon)))] = trim(line.substr(colon + 2));
+    fields[to_lower(trim_blanks(line.substr(0, colon)))] = trim_blanks(line.substr(colon + 2));
   }
   auto field = [&](std::initializer_list<const char*> keys) -> const std::string* {
     for (const char* k : keys)
@@ -174,13 +166,7 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
   };
 
   const ScalarType type = nrrd_type(required("type"));
-  const auto checked = [&](auto&& f) {
-    try {
-      return f();
-    } catch (const Error& e) {
-      throw Error(where + ": " + e.what());
-    }
-  };
+  const auto checked = [&](auto&& f) { return naming_file(where, f); };
   const int dimension = int(checked([&] { return parse_integer(required("dimension"), "dimension", 1, 16); }));
   const auto sizes = checked([&] { return parse_integers(required("sizes"), "sizes", std::int64_t{1} << 40); });
   if (int(sizes.size()) != dimension) throw Error(where + ": 'sizes' does not match 'dimension'");
@@ -191,33 +177,35 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
   const std::uint64_t n = checked([&] { return GridVolume::checked_sample_count(dims); });
 
   Vec3 spacing{1, 1, 1}, origin{0, 0, 0};
+  std::array<bool, 3> flip{false, false, false};  // axes the file stores backwards
   if (const auto* sp = field({"spacings"})) {
     const auto v = parse_numbers(*sp, "spacings");
     if (int(v.size()) != dimension) throw Error(where + ": 'spacings' does not match 'dimension'");
     for (int a = 0; a < 3; ++a)
       if (std::isfinite(v[a + skip_axes])) spacing[a] = std::abs(v[a + skip_axes]);
   } else if (const auto* dirs = field({"space directions"})) {
-    const auto v = parse_vectors(*dirs, "space directions");
+    const auto v = checked([&] { return parse_vectors(*dirs, "space directions"); });
     if (int(v.size()) != dimension) throw Error(where + ": 'space directions' does not match 'dimension'");
-    for (int a = 0; a < 3; ++a) {
-      const auto& d = v[a + skip_axes];
-      if (d.empty()) continue;
-      double len2 = 0;
-      for (double c : d) len2 += c * c;
-      spacing[a] = std::sqrt(len2);
-    }
+    for (int a = 0; a < 3; ++a) spacing[a] = axis_step(v[a + skip_axes], a, where, flip[a]);
   }
   if (const auto* so = field({"space origin"})) {
     const auto v = parse_numbers(*so, "space origin");
     if (v.size() != 3) throw Error(where + ": 'space origin' needs 3 values");
     origin = {v[0], v[1], v[2]};
   }
+  // The first stored sample is the file's last one along a flipped axis.
+  for (int a = 0; a < 3; ++a)
+    if (flip[a]) origin[a] -= double(dims[a] - 1) * spacing[a];
+  const auto volume = [&](GridVolume::Samples samples) {
+    flip_samples(samples, {int(dims[0]), int(dims[1]), int(dims[2])}, flip);
+    return checked([&] { return GridVolume({int(dims[0]), int(dims[1]), int(dims[2])}, std::move(samples), spacing, origin); });
+  };
 
-  const std::string encoding = lower(required("encoding"));
+  const std::string encoding = to_lower(required("encoding"));
   Endian endian = Endian::Little;
   if (const auto* e = field({"endian"})) {
-    if (lower(*e) == "big") endian = Endian::Big;
-    else if (lower(*e) != "little") throw Error(where + ": unknown endian '" + *e + "'");
+    if (to_lower(*e) == "big") endian = Endian::Big;
+    else if (to_lower(*e) != "little") throw Error(where + ": unknown endian '" + *e + "'");
   }
   // byte skip -1 means "the data is the last bytes of the file" (raw only, per
   // the NRRD spec); other negative skips are meaningless.
@@ -235,7 +223,7 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
   if (const auto* df = field({"data file", "datafile"})) {
     if (df->rfind("LIST", 0) == 0 || df->find('%') != std::string::npos)
       throw Error(where + ": multi-file data ('" + *df + "') is not supported");
-    data_path = detached_data_path(path, *df, options.allow_outside_paths, where);
+    data_path = detached_data_path(path.parent_path(), *df, options.allow_outside_paths, where, "data file");
     start = 0;
   }
   const std::uint64_t end = checked_file_size(data_path);
@@ -255,7 +243,6 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
   };
 
   const std::uint64_t need = n * scalar_type_size(type);
-  const std::array<int, 3> idims{int(dims[0]), int(dims[1]), int(dims[2])};
   const auto wrong_size = [&](std::uint64_t size) {
     return Error(where + " holds " + std::to_string(size) + " data bytes, but its sizes and type need " +
                  std::to_string(need));
@@ -269,9 +256,9 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
       start += std::uint64_t(byte_skip);
     }
     if (end - start != need) throw wrong_size(end - start);
-    return GridVolume(idims, GridVolume::decode(type, endian, n, [&](std::span<std::byte> out) {
-                        read_file_range(data_path, start, out);
-                      }), spacing, origin);
+    return volume(GridVolume::decode(type, endian, n, [&](std::span<std::byte> out) {
+      read_file_range(data_path, start, out);
+    }));
   }
   if (encoding == "gzip" || encoding == "gz") {
     if (byte_skip < 0) throw Error(where + ": 'byte skip: -1' only works with raw encoding (NRRD spec)");
@@ -281,10 +268,10 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
       throw Error(where + " declares " + std::to_string(need) + " data bytes, more than its " +
                   std::to_string(end - start) + " gzip bytes can hold");
     const std::vector<std::byte> packed = rest();
-    return GridVolume(idims, GridVolume::decode(type, endian, n, [&](std::span<std::byte> out) {
-                        const std::size_t got = gunzip_into(packed, std::size_t(byte_skip), out);
-                        if (got != need) throw wrong_size(got);
-                      }), spacing, origin);
+    return volume(GridVolume::decode(type, endian, n, [&](std::span<std::byte> out) {
+      const std::size_t got = gunzip_into(packed, std::size_t(byte_skip), out);
+      if (got != need) throw wrong_size(got);
+    }));
   }
   if (encoding == "ascii" || encoding == "text" || encoding == "txt") {
     if (byte_skip != 0) throw Error(where + ": 'byte skip' does not apply to ascii encoding");
@@ -296,7 +283,7 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
     const auto v = parse_numbers(text, "data");
     if (v.size() != n)
       throw Error(where + " holds " + std::to_string(v.size()) + " ascii values, expected " + std::to_string(n));
-    return GridVolume(idims, std::vector<float>(v.begin(), v.end()), spacing, origin);
+    return volume(std::vector<float>(v.begin(), v.end()));
   }
   throw Error(where + ": encoding '" + encoding + "' is not supported (raw, gzip, ascii)");
 }

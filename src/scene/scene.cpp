@@ -1,5 +1,8 @@
-#include "vri/core/error.hpp"
 #include "vri/scene/scene.hpp"
+
+#include <algorithm>
+
+#include "vri/core/error.hpp"
 
 namespace vri {
 
@@ -11,6 +14,18 @@ const GridVolume& Scene::grid() const {
 const TetMesh& Scene::mesh() const {
   if (const auto* m = std::get_if<TetMesh>(&volume)) return *m;
   throw Error("this scene's volume is a regular grid, not a tetrahedral mesh");
+}
+
+std::pair<Vec3, Vec3> bounds(const Volume& volume) {
+  if (const auto* g = std::get_if<GridVolume>(&volume)) return {g->box_lo(), g->box_hi()};
+  const std::vector<Vec3>& points = std::get<TetMesh>(volume).points();
+  Vec3 lo = points.front(), hi = points.front();
+  for (const Vec3& p : points)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], p[a]);
+      hi[a] = std::max(hi[a], p[a]);
+    }
+  return {lo, hi};
 }
 
 }  // namespace vri

@@ -11,12 +11,17 @@
 #include <optional>
 #include <string>
 
+#include "vri/camera/framing.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
 #include "vri/io/file_io.hpp"
+#include "vri/io/metaimage.hpp"
+#include "vri/io/npy.hpp"
 #include "vri/io/nrrd.hpp"
 #include "vri/io/raw_volume.hpp"
+#include "vri/io/volume_file.hpp"
 #include "vri/io/volvis_dat.hpp"
+#include "vri/io/vti.hpp"
 #include "vri/io/vtk_legacy.hpp"
 #include "vri/io/vtu.hpp"
 #include "vri/tables/second_order_table.hpp"
@@ -254,18 +259,39 @@ GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r
   } else {
     fs::path file = r.string(j, "file");
     if (file.is_relative()) file = base / file;
-    const std::string ext = file.extension().string();
-    if (ext == ".nrrd" || ext == ".nhdr") {
-      vol.emplace(read_nrrd(file, NrrdOptions{r.boolean(j, "allow_outside_paths", false)}));
-    } else if (ext == ".dat") {
-      vol.emplace(read_volvis_dat(file));
-    } else {
-      if (!j.contains("dims")) throw Error(r.ctx() + ": a raw file needs 'dims'");
-      const auto dims = r.dims(j, "dims");
-      const ScalarType type = parse_scalar_type(r.string(j, "type", "uint8"));
-      const std::string endian = r.string(j, "endian", "little");
-      if (endian != "little" && endian != "big") r.expected("endian", "little or big", j.at("endian"));
-      vol.emplace(read_raw_volume(file, dims, type, endian == "big" ? Endian::Big : Endian::Little));
+    const VolumeFormat format = volume_format(file);
+    const std::string what = "applies to headerless raw files; this one is " + std::string(format_name(format));
+    if (format != VolumeFormat::Raw) r.refused(j, {"dims", "type", "endian"}, what);
+    if (format != VolumeFormat::Vti && format != VolumeFormat::VtkStructuredPoints)
+      r.refused(j, {"scalars"}, "names an array of a VTK file; this one is " + std::string(format_name(format)));
+    if (format != VolumeFormat::Nrrd && format != VolumeFormat::MetaImage)
+      r.refused(j, {"allow_outside_paths"}, "applies to NRRD and MetaImage headers that name a data file");
+    const bool outside = r.boolean(j, "allow_outside_paths", false);
+    const std::string scalars = r.string(j, "scalars", "");
+    switch (format) {
+      case VolumeFormat::Nrrd:
+        vol.emplace(read_nrrd(file, NrrdOptions{outside}));
+        break;
+      case VolumeFormat::VolvisDat: vol.emplace(read_volvis_dat(file)); break;
+      case VolumeFormat::Vti: vol.emplace(read_vti(file, scalars)); break;
+      case VolumeFormat::VtkStructuredPoints: vol.emplace(read_vtk_structured_points(file, scalars)); break;
+      case VolumeFormat::MetaImage: vol.emplace(read_metaimage(file, MetaImageOptions{outside})); break;
+      case VolumeFormat::Npy: vol.emplace(read_npy_volume(file)); break;
+      case VolumeFormat::VtkLegacyMesh:
+      case VolumeFormat::Vtu:
+        throw Error(r.ctx() + ": '" + printable(file.string()) + "' is a tetrahedral mesh, not a regular grid");
+      case VolumeFormat::Raw: {
+        if (!j.contains("dims"))
+          throw Error(r.ctx() + ": '" + printable(file.string()) + "' has no header vri knows, so it is read as " +
+                      "headerless raw, which needs 'dims' (and 'type'); vri reads " +
+                      std::string(supported_formats()));
+        const auto dims = r.dims(j, "dims");
+        const ScalarType type = parse_scalar_type(r.string(j, "type", "uint8"));
+        const std::string endian = r.string(j, "endian", "little");
+        if (endian != "little" && endian != "big") r.expected("endian", "little or big", j.at("endian"));
+        vol.emplace(read_raw_volume(file, dims, type, endian == "big" ? Endian::Big : Endian::Little));
+        break;
+      }
     }
   }
   // Keys in the scene override the file's own header (SPEC §8).
@@ -286,30 +312,48 @@ Volume volume_from(const json& j, const fs::path& base, const Reader& top) {
   r.known(j, kVolumeKeys);
   const bool tetrahedralized = j.contains("builtin") && r.string(j, "builtin") == "tetrahedralized";
   fs::path file = j.contains("file") && !j.contains("builtin") ? fs::path(r.string(j, "file")) : fs::path();
-  const std::string ext = file.extension().string();
-  if (!tetrahedralized && ext != ".vtk" && ext != ".vtu") return grid_volume_from(j, base, r);
+  if (!file.empty() && file.is_relative()) file = base / file;
+  const bool mesh = !file.empty() && is_mesh(volume_format(file));
+  if (!tetrahedralized && !mesh) return grid_volume_from(j, base, r);
   r.refused(j, {"spacing", "origin", "dims"}, "applies to grid volumes, not to meshes");
   if (tetrahedralized) {
     if (!j.contains("grid")) throw Error(r.ctx() + ": 'tetrahedralized' needs a 'grid' volume to split");
     const Reader g = r.child("grid");
     return tetrahedralize(grid_volume_from(g.object(j.at("grid")), base, g), r.integer(j, "tets_per_cell", 5));
   }
-  if (file.is_relative()) file = base / file;
   const std::string scalars = r.string(j, "scalars", "");
   try {
-    return ext == ".vtk" ? read_vtk_legacy(file, scalars) : read_vtu(file, scalars);
+    return volume_format(file) == VolumeFormat::VtkLegacyMesh ? read_vtk_legacy(file, scalars) : read_vtu(file, scalars);
   } catch (const Error& e) {
     throw Error(r.ctx() + ": " + e.what());
   }
 }
 
-CameraSpec camera_from(const json& j, const Reader& top) {
+// A camera block (SPEC §6) and, beyond it (issue 20), "fit": frame the
+// volume's box (the default when no eye is given), and VTK's motions
+// "azimuth", "elevation", "roll" (degrees) and "zoom" relative to that frame or
+// to the eye given. The motions and the fit need the volume: CameraRequest
+// keeps them until it is loaded (place_camera).
+struct CameraRequest {
+  CameraSpec spec;
+  bool fit = false;
+  double azimuth = 0, elevation = 0, roll = 0, zoom = 1;
+};
+
+CameraRequest camera_from(const json& j, const Reader& top) {
   const Reader r = top.child("camera");
   r.object(j);
-  r.known(j, {"eye", "target", "up", "fov_y", "width", "height", "projection", "ortho_height"});
-  CameraSpec c;
-  c.eye = r.vec3(j, "eye");
-  c.target = r.vec3(j, "target");
+  r.known(j, {"eye", "target", "up", "fov_y", "width", "height", "projection", "ortho_height", "fit", "azimuth",
+              "elevation", "roll", "zoom"});
+  CameraRequest q;
+  CameraSpec& c = q.spec;
+  q.fit = r.boolean(j, "fit", !j.contains("eye") && !j.contains("target"));
+  if (q.fit) {
+    r.refused(j, {"eye", "target"}, "is replaced by the frame of \"fit\": give one or the other");
+  } else {
+    c.eye = r.vec3(j, "eye");
+    c.target = r.vec3(j, "target");
+  }
   c.up = r.vec3(j, "up", Vec3{0, 1, 0});
   c.fov_y = r.number(j, "fov_y", 30.0);
   for (const char* key : {"width", "height"})
@@ -321,9 +365,31 @@ CameraSpec camera_from(const json& j, const Reader& top) {
   if (proj == "perspective") c.projection = Projection::Perspective;
   else if (proj == "orthographic") c.projection = Projection::Orthographic;
   else r.expected("projection", "perspective or orthographic", j.at("projection"));
-  if (c.projection == Projection::Orthographic) c.ortho_height = r.number(j, "ortho_height");
-  Camera check(c);  // validates now, so a bad camera fails before any volume work
-  return c;
+  if (c.projection == Projection::Orthographic && !q.fit) c.ortho_height = r.number(j, "ortho_height");
+  q.azimuth = r.number(j, "azimuth", 0.0);
+  q.elevation = r.number(j, "elevation", 0.0);
+  q.roll = r.number(j, "roll", 0.0);
+  q.zoom = r.number(j, "zoom", 1.0);
+  if (!(q.zoom > 0)) r.expected("zoom", "a number > 0", j.at("zoom"));
+  if (!q.fit) Camera check(c);  // validates now, so a bad camera fails before any volume work
+  return q;
+}
+
+// The camera of a request, framing `volume` (which a fit needs) if asked.
+CameraSpec place_camera(const CameraRequest& q, const Volume* volume, const Reader& top) {
+  try {
+    CameraSpec c = q.spec;
+    if (q.fit) {
+      if (!volume) throw Error("\"fit\" needs the volume: give eye and target");
+      const auto [lo, hi] = bounds(*volume);
+      c = frame_box(lo, hi, c);
+    }
+    c = move_camera(c, q.azimuth, q.elevation, q.roll, q.zoom);
+    Camera check(c);
+    return c;
+  } catch (const Error& e) {
+    throw Error(top.child("camera").ctx() + ": " + e.what());
+  }
 }
 
 // A step, tolerance or size: finite and > 0 (issue 17: `inf` read out of bounds).
@@ -396,7 +462,8 @@ TransferFunction parse_transfer_function(std::string_view text, const std::strin
 }
 
 CameraSpec parse_camera(std::string_view text, const std::string& source) {
-  return camera_from(parse_json(text, source), Reader{source, ""});
+  const Reader r{source, ""};
+  return place_camera(camera_from(parse_json(text, source), r), nullptr, r);
 }
 
 TransferFunction load_transfer_function(const fs::path& path) {
@@ -416,7 +483,7 @@ Scene scene_from(std::string_view text, const fs::path& base, const std::string&
       throw Error(source + ": missing '" + std::string(key) + "'");
   if (given && j.contains("volume")) throw Error(source + ": the volume is given, so 'volume' must not be");
 
-  const CameraSpec camera = camera_from(j.at("camera"), r);
+  const CameraRequest camera = camera_from(j.at("camera"), r);
   const MethodSpec method = j.contains("method") ? method_from(j.at("method"), r) : MethodSpec{};
   const Lighting lighting = j.contains("lighting") ? lighting_from(j.at("lighting"), r) : Lighting{};
 
@@ -439,7 +506,8 @@ Scene scene_from(std::string_view text, const fs::path& base, const std::string&
   }
 
   Volume volume = given ? std::move(*given) : volume_from(j.at("volume"), base, r);
-  return Scene{std::move(volume), std::move(*tf), camera, lighting, background, method};
+  const CameraSpec placed = place_camera(camera, &volume, r);
+  return Scene{std::move(volume), std::move(*tf), placed, lighting, background, method};
 }
 
 }  // namespace
@@ -450,6 +518,12 @@ Scene parse_scene(std::string_view text, const fs::path& base, const std::string
 
 Scene parse_scene(std::string_view text, Volume volume, const fs::path& base, const std::string& source) {
   return scene_from(text, base, source, std::move(volume));
+}
+
+Volume load_volume(const fs::path& file, const std::string& scalars) {
+  json j = {{"file", file.string()}};
+  if (!scalars.empty()) j["scalars"] = scalars;
+  return volume_from(j, ".", Reader{"volume '" + printable(file.string()) + "'", ""});
 }
 
 Scene load_scene(const fs::path& path) {

@@ -1,5 +1,7 @@
 #include "vri/scene/scene_overrides.hpp"
 
+#include "vri/camera/framing.hpp"
+
 namespace vri {
 
 void apply_overrides(Scene& scene, const SceneOverrides& o) {
@@ -26,6 +28,13 @@ void apply_overrides(Scene& scene, const SceneOverrides& o) {
   if (o.float_math) m.fast.float_math = *o.float_math;
   if (o.max_samples) m.max_samples = *o.max_samples;
   if (o.max_work) m.max_work = *o.max_work;
+  if (o.fit.value_or(false)) {
+    const auto [lo, hi] = bounds(scene.volume);
+    scene.camera = frame_box(lo, hi, scene.camera);
+  }
+  if (o.azimuth || o.elevation || o.roll || o.zoom)
+    scene.camera = move_camera(scene.camera, o.azimuth.value_or(0), o.elevation.value_or(0), o.roll.value_or(0),
+                               o.zoom.value_or(1));
 }
 
 }  // namespace vri

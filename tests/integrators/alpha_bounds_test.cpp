@@ -95,20 +95,8 @@ TEST_P(AlphaBounds, AlphaInUnitIntervalAndColourWithinAlphaTimesBrightest) {
   }
 }
 
-std::vector<std::string> bundled_scenes() {
-  std::vector<std::string> names;
-  for (const auto& e : std::filesystem::directory_iterator(test::source_path("scenes")))
-    if (e.path().extension() == ".json") names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-INSTANTIATE_TEST_SUITE_P(AllBundledScenes, AlphaBounds, ::testing::ValuesIn(bundled_scenes()),
-                         [](const auto& info) {
-                           std::string n = info.param.substr(0, info.param.size() - 5);
-                           std::replace(n.begin(), n.end(), '-', '_');
-                           return n;
-                         });
+INSTANTIATE_TEST_SUITE_P(AllBundledScenes, AlphaBounds, ::testing::ValuesIn(test::bundled_scenes()),
+                         [](const auto& info) { return test::scene_test_name(info.param); });
 
 }  // namespace
 }  // namespace vri

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/gzip.hpp"
+#include "io/pattern_fixtures.hpp"
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
 #include "vri/volume/builtin_volumes.hpp"
@@ -91,9 +92,12 @@ TEST(Nrrd, ReadsHandWrittenHeaders) {
   test::write_bytes(dir / "h.nrrd", bytes);
   const auto vol = read_nrrd(dir / "h.nrrd");
   EXPECT_EQ(vol.type(), ScalarType::UInt16);
-  EXPECT_FLOAT_EQ(vol.at(1, 1, 1), 256 + 7);  // swapped in place
+  // swapped in place; the y direction is negative: file sample (1, 1, 1) is
+  // the volume's (1, 0, 1), and the origin the low corner (2 - 3 = -1)
+  EXPECT_FLOAT_EQ(vol.at(1, 0, 1), 256 + 7);
   EXPECT_DOUBLE_EQ(vol.spacing().y, 3);
   EXPECT_DOUBLE_EQ(vol.spacing().z, 4);
+  EXPECT_DOUBLE_EQ(vol.origin().y, -1);
   EXPECT_DOUBLE_EQ(vol.origin().z, 3);
   // ascii encoding with a leading size-1 axis
   test::write_text(dir / "a.nrrd", "NRRD0004\ntype: float\ndimension: 4\nsizes: 1 2 2 2\nencoding: ascii\n\n1 2 3 4\n5 6 7 8.5\n");
@@ -222,6 +226,45 @@ TEST(Nrrd, DataFileStaysInTheHeadersFolder) {
       EXPECT_EQ(read_nrrd(dir / "sub" / name, NrrdOptions{.allow_outside_paths = true}).size(), 8u) << name;
     }
   }
+}
+
+// Issue 20: a negative `space directions` entry runs that axis backwards; the
+// samples are mirrored so that each sits where the file puts it, and the box
+// is the file's (fixtures by tools/make_mhd_npy_fixtures.py).
+TEST(Nrrd, NegativeSpaceDirectionsFlipTheAxis) {
+  const Vec3 spacing{0.5, 1.25, 2}, origin{-1, 2, 3.5};
+  test::expect_pattern(read_nrrd(test::volume_fixture("nrrd_neg_x.nrrd")),
+                       {"nrrd_neg_x.nrrd", 300, 0, ScalarType::UInt16}, spacing, origin);
+  test::expect_pattern(read_nrrd(test::volume_fixture("nrrd_neg_yz_gzip.nrrd")),
+                       {"nrrd_neg_yz_gzip.nrrd", 0.5, -10, ScalarType::Float32}, spacing, origin);
+  test::TempDir dir;
+  const std::string head = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\nspace origin: (5,0,0)\n";
+  test::write_text(dir / "x.nrrd", head + "space directions: (-2,0,0) (0,1,0) (0,0,1)\n\n\1\2\3\4\5\6\7\10");
+  const auto v = read_nrrd(dir / "x.nrrd");
+  EXPECT_EQ(test::floats(v), (std::vector<float>{2, 1, 4, 3, 6, 5, 8, 7}));
+  EXPECT_DOUBLE_EQ(v.origin().x, 3);
+  EXPECT_DOUBLE_EQ(v.box_hi().x, 5);
+  // a 4D file's leading "none" axis, and `spacings` (no directions): unchanged
+  test::write_text(dir / "n.nrrd", "NRRD0004\ntype: uint8\ndimension: 4\nsizes: 1 2 2 2\nencoding: raw\n"
+                                   "space directions: none (1,0,0) (0,-1,0) (0,0,1)\n\n\1\2\3\4\5\6\7\10");
+  EXPECT_EQ(test::floats(read_nrrd(dir / "n.nrrd")), (std::vector<float>{3, 4, 1, 2, 7, 8, 5, 6}));
+}
+
+TEST(Nrrd, RefusesSpaceDirectionsThatAreNotAxisAligned) {
+  const auto path = test::volume_fixture("nrrd_oblique.nrrd");
+  const std::string m =
+      test::expect_error([&] { read_nrrd(path); }, "'space directions' vector (0.5,0.5,0) is not along its axis");
+  EXPECT_NE(m.find("NRRD '" + path.string() + "'"), std::string::npos) << m;
+  test::TempDir dir;
+  const std::string head = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\nspace directions: ";
+  const auto refuse = [&](const std::string& dirs, const std::string& fragment) {
+    test::write_text(dir / "d.nrrd", head + dirs + "\n\n12345678");
+    test::expect_error([&] { read_nrrd(dir / "d.nrrd"); }, fragment);
+  };
+  refuse("(0,1,0) (1,0,0) (0,0,1)", "vector (0,1,0) has no step along its axis");
+  refuse("(1,0,0) (0,1,0) (0,0.001,1)", "vector (0,0.001,1) is not along its axis");
+  refuse("(1,0) (0,1) (0,0)", "vector (1,0) needs 3 components");
+  refuse("(1,0,0) (0,1,0)", "'space directions' does not match 'dimension'");
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "vri/camera/framing.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
+#include "vri/volume/histogram.hpp"
 
 namespace vri::viewer {
 
@@ -48,20 +49,11 @@ struct Bounds {
 };
 
 Bounds bounds_of(const Volume& volume) {
-  if (const auto* g = std::get_if<GridVolume>(&volume))
-    return {g->box_lo(), g->box_hi(), g->min_value(), g->max_value()};
-  const TetMesh& m = std::get<TetMesh>(volume);
-  Bounds b{m.points().front(), m.points().front(), m.scalars().front(), m.scalars().front()};
-  for (const Vec3& p : m.points())
-    for (int a = 0; a < 3; ++a) {
-      b.lo[a] = std::min(b.lo[a], p[a]);
-      b.hi[a] = std::max(b.hi[a], p[a]);
-    }
-  for (const float s : m.scalars()) {
-    b.lo_value = std::min<double>(b.lo_value, s);
-    b.hi_value = std::max<double>(b.hi_value, s);
-  }
-  return b;
+  const auto [lo, hi] = bounds(volume);
+  if (const auto* g = std::get_if<GridVolume>(&volume)) return {lo, hi, g->min_value(), g->max_value()};
+  const std::vector<float>& s = std::get<TetMesh>(volume).scalars();
+  const auto [min, max] = std::minmax_element(s.begin(), s.end());
+  return {lo, hi, *min, *max};
 }
 
 // The page's view of the volume: what it is, its range and box, the unit of the opacity axis.
@@ -91,35 +83,25 @@ json default_method(const Volume& volume) {
                                                     : json{{"name", "tet-raycast"}};
 }
 
-// The scene of a bare volume file: a grey ramp whose densest voxel stops half
-// the light over a tenth of the box's diagonal, the framing camera, the
-// method users of the volume's kind want first.
+// The scene of a bare volume file: the transfer function its histogram
+// suggests (`vri info` prints the same), the framing camera, the method users
+// of the volume's kind want first.
 std::string default_scene_text(const Volume& volume) {
-  const Bounds b = bounds_of(volume);
-  const double diagonal = std::max(length(b.hi - b.lo), 1e-9);
-  const double tau = std::log(2.0) / (0.1 * diagonal);
-  const double lo = b.lo_value, hi = b.hi_value > b.lo_value ? b.hi_value : b.lo_value + 1;
-  const json scene = {
-      {"transfer_function", {{"points", {{lo, 1, 1, 1, 0}, {hi, 1, 1, 1, tau}}}}},
-      {"camera", camera_json(frame_box(b.lo, b.hi))},
-      {"method", default_method(volume)}};
+  const auto [lo, hi] = bounds(volume);
+  const auto* g = std::get_if<GridVolume>(&volume);
+  const Histogram h = g ? vri::histogram(*g) : vri::histogram(std::span<const float>(std::get<TetMesh>(volume).scalars()));
+  const json scene = {{"transfer_function", transfer_function_json(suggest_transfer_function(h, length(hi - lo)))},
+                      {"camera", camera_json(frame_box(lo, hi))},
+                      {"method", default_method(volume)}};
   return scene.dump();
 }
 
 }  // namespace
 
 json histogram(const Volume& volume) {
-  const Bounds b = bounds_of(volume);
-  const double lo = b.lo_value, hi = b.hi_value, width = hi > lo ? hi - lo : 1;
-  std::vector<std::uint64_t> counts(256, 0);
-  auto add = [&](double s) { ++counts[std::min<std::size_t>(255, std::size_t((s - lo) / width * 256))]; };
-  if (const auto* g = std::get_if<GridVolume>(&volume))
-    g->visit([&](auto samples) {
-      for (const auto s : samples) add(double(s));
-    });
-  else
-    for (const float s : std::get<TetMesh>(volume).scalars()) add(s);
-  return {{"range", {lo, hi}}, {"counts", counts}};
+  const auto* g = std::get_if<GridVolume>(&volume);
+  const Histogram h = g ? vri::histogram(*g) : vri::histogram(std::span<const float>(std::get<TetMesh>(volume).scalars()));
+  return {{"range", {h.lo, h.hi}}, {"counts", h.counts}};
 }
 
 std::shared_ptr<const Dataset> load_dataset(const fs::path& file, const std::string& id) {
@@ -148,12 +130,7 @@ std::shared_ptr<const Dataset> load_dataset(const fs::path& file, const std::str
     if (loaded.method.name == "exact") scene["method"] = default_method(*volume);
   } else {
     volume_json = {{"file", fs::absolute(file).lexically_normal().string()}};
-    Scene loaded = parse_scene(json{{"volume", volume_json},
-                                    {"transfer_function", {{"points", {{0, 0, 0, 0, 0}}}}},
-                                    {"camera", {{"eye", {0, 0, 1}}, {"target", {0, 0, 0}}}}}
-                                   .dump(),
-                               base, "volume " + source);
-    volume.emplace(std::move(loaded.volume));
+    volume.emplace(load_volume(file));
     scene = json::parse(default_scene_text(*volume));
     scene["lighting"] = lighting_json(Lighting{});
     scene["background"] = {0, 0, 0};

@@ -9,8 +9,12 @@
 namespace vri {
 
 // Reads a 3D NRRD (or 4D with a leading axis of size 1). Spacing comes from
-// `spacings`, or from the lengths of `space directions` (rotations are not
-// applied: vri grids are axis-aligned); origin from `space origin`.
+// `spacings`, or from `space directions`, which must be diagonal (vri grids
+// are axis-aligned: rotated or permuted axes are refused); a negative entry
+// means the file stores that axis backwards: the samples are mirrored along
+// it and the origin moved to the low corner, so every sample sits where the
+// file puts it (`space origin` + index * direction; the world box is the
+// file's). Origin from `space origin`. NRRD spec: teem.sourceforge.net/nrrd/format.html
 // A detached header's `data file` is resolved against the header's folder and
 // may not leave it (absolute paths, "..", symlinks out) unless
 // allow_outside_paths (the scene volume key "allow_outside_paths").

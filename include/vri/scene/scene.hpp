@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 
 #include "vri/camera/camera.hpp"
@@ -29,6 +30,14 @@ struct Scene {
   const GridVolume& grid() const;
   const TetMesh& mesh() const;
 };
+
+// A volume file on its own (any format volume_file.hpp tells apart but raw,
+// which needs dims and type: a scene gives them); `scalars` names the array of
+// a VTK file. vri::Error with one line as in a scene.
+Volume load_volume(const std::filesystem::path& file, const std::string& scalars = "");
+
+// The box a volume fills: a grid's (SPEC §1), a mesh's points' bounding box.
+std::pair<Vec3, Vec3> bounds(const Volume& volume);
 
 // Loads a scene; relative paths inside it are relative to the scene file.
 // Every problem (missing file, bad JSON, wrong sizes, bad values) throws

@@ -14,9 +14,13 @@ struct SceneOverrides {
   std::optional<double> step, tolerance, termination, max_samples, max_work, h0, hmin, hmax;
   std::optional<int> table_size, iterations, width, height;
   std::optional<bool> skip_empty, float_math;
+  // The camera (issue 20): `fit` frames the volume's box (framing.hpp), then
+  // VTK's motions in degrees and the zoom factor.
+  std::optional<bool> fit;
+  std::optional<double> azimuth, elevation, roll, zoom;
 };
 
-// Sets every given field. A method other than the scene's drops the scene's
+// Sets every given field; the camera's size first, then the fit, then the motions. A method other than the scene's drops the scene's
 // table_size (it was chosen for the scene's own method: preint2-dual then
 // keeps its default, 64) unless table_size is given too.
 void apply_overrides(Scene& scene, const SceneOverrides& overrides);
