@@ -10,7 +10,8 @@ pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1
       python3-dev pybind11-dev python3-pybind11 python3-pytest python3-matplotlib
       jupyter-nbconvert python3-ipykernel
       # the viewer (viewer/): Boost.Beast, JPEG frames, and its browser test's Chromium
-      libboost-dev libturbojpeg0-dev chromium)
+      libboost-dev libturbojpeg0-dev chromium
+      libopenexr-dev)  # .exr output
 # The browser test's driver (puppeteer-core) comes from npm: node and npm from
 # Debian unless the image has a node of its own.
 command -v node >/dev/null || pkgs+=(nodejs)

@@ -2,7 +2,10 @@
 //   [--tolerance E] [--table-size N] [--width W --height H] [--threads K]
 //   [--h0 H --hmin H --hmax H --strategy S] [--error-estimate ERR.npy]
 //   [--trace-pixel PX PY --trace STEPS.csv] [--termination T] [--no-skip] [--double]
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <functional>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
@@ -14,6 +17,8 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "exr_output.hpp"
+#include "progress_bar.hpp"
 #include "vri/core/error.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
 #include "vri/io/file_io.hpp"
@@ -31,7 +36,9 @@ namespace {
 struct RenderArgs {
   std::string scene, output;
   SceneOverrides overrides;
-  bool no_skip = false, double_math = false, fit = false;
+  bool no_skip = false, double_math = false, fit = false, quiet = false;
+  std::string background;  // "none" (PNG with alpha) or "R,G,B"
+  int png_bits = 8;
   int threads = 0;
   std::optional<std::string> error_estimate, trace;
   std::vector<int> trace_pixel;
@@ -51,11 +58,26 @@ std::string trace_csv(const Ray& ray, const ErrorEstimatingIntegrator& integrato
   return csv.str();
 }
 
+// --background R,G,B: three numbers in [0, 1].
+Vec3 parse_background(const std::string& text) {
+  double v[3];
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &tail) != 3 ||
+      !std::all_of(v, v + 3, [](double x) { return x >= 0 && x <= 1; }))
+    throw Error("--background must be 'none' or three numbers in [0, 1] such as 0.1,0.1,0.2, not '" + text + "'");
+  return {v[0], v[1], v[2]};
+}
+
 int run_render(RenderArgs args) {
   const std::filesystem::path out(args.output);
   const std::string ext = out.extension().string();
-  if (ext != ".npy" && ext != ".png")
-    throw Error("output '" + args.output + "' must end in .npy or .png");
+  if (ext != ".npy" && ext != ".png" && ext != ".exr")
+    throw Error("output '" + args.output + "' must end in .npy, .png or .exr");
+  if (ext == ".exr" && !exr_supported()) write_exr(out, Image());  // says why, before any work
+  if (args.png_bits != 8 && args.png_bits != 16) throw Error("--png-bits must be 8 or 16");
+  if ((args.png_bits != 8 || args.background == "none") && ext != ".png")
+    throw Error("--png-bits and --background none apply to .png output");
+  PngFormat png{.transparent = args.background == "none", .bits = args.png_bits};
   const int threads = checked_threads(args.threads);
 
   Scene scene = load_scene(args.scene);
@@ -63,6 +85,7 @@ int run_render(RenderArgs args) {
   if (args.double_math) args.overrides.float_math = false;
   if (args.fit) args.overrides.fit = true;
   apply_overrides(scene, args.overrides);
+  if (!args.background.empty() && args.background != "none") scene.background = parse_background(args.background);
   if (args.error_estimate && std::filesystem::path(*args.error_estimate).extension() != ".npy")
     throw Error("--error-estimate '" + *args.error_estimate + "' must end in .npy");
   if (args.trace.has_value() != !args.trace_pixel.empty()) throw Error("--trace and --trace-pixel go together");
@@ -80,12 +103,15 @@ int run_render(RenderArgs args) {
   }
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();  // process CPU time, all threads
-  const Image image = renderer.render({.threads = threads});
+  ProgressBar progress(!args.quiet);
+  const Image image = renderer.render({.threads = threads, .progress = std::ref(progress)});
+  progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   // Each output is staged as soon as it exists; main() commits them together.
   if (ext == ".npy") write_npy(out, image);
-  else write_png(out, image, scene.background);
+  else if (ext == ".exr") write_exr(out, image);
+  else write_png(out, image, scene.background, png);
   if (args.error_estimate) write_npy(*args.error_estimate, renderer.render_error_estimate({.threads = threads}));
   if (args.trace) {
     const std::string trace =
@@ -111,7 +137,11 @@ Runner add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to .npy (float RGBA) or .png");
   cmd->add_option("scene", args->scene, "Scene JSON file")->required();
-  cmd->add_option("-o,--output", args->output, "Output image (.npy or .png)")->required();
+  cmd->add_option("-o,--output", args->output, "Output image (.npy, .png or .exr)")->required();
+  cmd->add_option("--background", args->background,
+                  "PNG: 'none' keeps alpha (straight colour, no background); or R,G,B in [0, 1] over the scene's");
+  cmd->add_option("--png-bits", args->png_bits, "PNG: 8 (default) or 16 bits a channel");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress line (it shows only on a terminal, after a second)");
   cmd->add_option("--method", args->overrides.method, "Integration method (overrides the scene)");
   cmd->add_option("--step", args->overrides.step, "Step size in voxel units");
   cmd->add_option("--tolerance", args->overrides.tolerance, "Error tolerance (exact, adaptive)");

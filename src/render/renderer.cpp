@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <atomic>
 #include <algorithm>
 #include <vector>
 
@@ -17,6 +18,8 @@ Image render(const Camera& camera, const Integrator& integrator, const RenderOpt
   const int W = camera.width(), H = camera.height(), ts = options.tile_size;
   const int tiles_x = (W + ts - 1) / ts, tiles_y = (H + ts - 1) / ts;
   Image image(W, H);
+  const int tiles = tiles_x * tiles_y;
+  std::atomic<int> done{0};
   auto render_tiles = [&](const tbb::blocked_range<int>& range) {
     for (int t = range.begin(); t != range.end(); ++t) {
       if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;
@@ -29,10 +32,14 @@ Image render(const Camera& camera, const Integrator& integrator, const RenderOpt
         integrator.integrate_row(rays.data(), x1 - x0, row.data());
         for (int x = x0; x < x1; ++x) image.set(x, y, row[x - x0]);
       }
+      if (options.progress) {
+        const int n = done.fetch_add(1) + 1;
+        if (n * 100 / tiles != (n - 1) * 100 / tiles) options.progress(double(n) / tiles);
+      }
     }
   };
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-  arena.execute([&] { tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), render_tiles); });
+  arena.execute([&] { tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), render_tiles); });
   throw_if_cancelled(options);
   return image;
 }

@@ -3,6 +3,7 @@
 // Integrator, in square tiles spread over threads. Each pixel depends only on
 // its own ray, so the image is the same bytes for any thread count.
 #include <atomic>
+#include <functional>
 
 #include "vri/camera/camera.hpp"
 #include "vri/core/error.hpp"
@@ -17,6 +18,9 @@ struct RenderOptions {
   // Set by another thread to stop the render between tiles (the viewer drops
   // a frame the user will no longer see); render() then throws RenderCancelled.
   const std::atomic<bool>* cancel = nullptr;
+  // Called with the share of tiles done (0 .. 1), from whichever render thread
+  // finished a tile, at most once per whole percent: keep it cheap and thread-safe.
+  std::function<void(double)> progress = {};
 };
 
 // Thrown by a render whose RenderOptions::cancel was set: no image.
