@@ -43,24 +43,18 @@ void absolute_files(json& j, const fs::path& base) {
   }
 }
 
-struct Bounds {
-  Vec3 lo, hi;
-  double lo_value, hi_value;
-};
-
-Bounds bounds_of(const Volume& volume) {
-  const auto [lo, hi] = bounds(volume);
-  if (const auto* g = std::get_if<GridVolume>(&volume)) return {lo, hi, g->min_value(), g->max_value()};
-  const std::vector<float>& s = std::get<TetMesh>(volume).scalars();
-  const auto [min, max] = std::minmax_element(s.begin(), s.end());
-  return {lo, hi, *min, *max};
+// The histogram of a grid's samples or a mesh's point scalars (its range is the data's).
+Histogram histogram_of(const Volume& volume) {
+  if (const auto* g = std::get_if<GridVolume>(&volume)) return histogram(*g);
+  return histogram(std::span<const float>(std::get<TetMesh>(volume).scalars()));
 }
 
 // The page's view of the volume: what it is, its range and box, the unit of the opacity axis.
-json describe(const Dataset& d, const Bounds& b) {
+json describe(const Dataset& d, const Histogram& h) {
+  const auto [lo, hi] = bounds(d.volume);
   json v = {{"name", d.id},
-            {"range", {b.lo_value, b.hi_value}},
-            {"bounds", {{b.lo.x, b.lo.y, b.lo.z}, {b.hi.x, b.hi.y, b.hi.z}}},
+            {"range", {h.lo, h.hi}},
+            {"bounds", {{lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z}}},
             {"json", d.volume_json}};
   if (const auto* g = std::get_if<GridVolume>(&d.volume)) {
     v["kind"] = "grid";
@@ -71,10 +65,10 @@ json describe(const Dataset& d, const Bounds& b) {
     v["kind"] = "mesh";
     v["cells"] = m.tets().size();
     // A mesh has no voxel: the edge of a cube of the mean cell volume.
-    const Vec3 e = b.hi - b.lo;
+    const Vec3 e = hi - lo;
     v["unit_distance"] = std::cbrt(std::max(e.x * e.y * e.z, 1e-300) / double(m.tets().size()));
   }
-  return {{"volume", v}, {"histogram", histogram(d.volume)}};
+  return {{"volume", v}, {"histogram", {{"range", {h.lo, h.hi}}, {"counts", h.counts}}}};
 }
 
 // What the viewer renders with when nothing says otherwise: interactive and accurate.
@@ -86,10 +80,8 @@ json default_method(const Volume& volume) {
 // The scene of a bare volume file: the transfer function its histogram
 // suggests (`vri info` prints the same), the framing camera, the method users
 // of the volume's kind want first.
-std::string default_scene_text(const Volume& volume) {
+std::string default_scene_text(const Volume& volume, const Histogram& h) {
   const auto [lo, hi] = bounds(volume);
-  const auto* g = std::get_if<GridVolume>(&volume);
-  const Histogram h = g ? vri::histogram(*g) : vri::histogram(std::span<const float>(std::get<TetMesh>(volume).scalars()));
   const json scene = {{"transfer_function", transfer_function_json(suggest_transfer_function(h, length(hi - lo)))},
                       {"camera", camera_json(frame_box(lo, hi))},
                       {"method", default_method(volume)}};
@@ -98,18 +90,13 @@ std::string default_scene_text(const Volume& volume) {
 
 }  // namespace
 
-json histogram(const Volume& volume) {
-  const auto* g = std::get_if<GridVolume>(&volume);
-  const Histogram h = g ? vri::histogram(*g) : vri::histogram(std::span<const float>(std::get<TetMesh>(volume).scalars()));
-  return {{"range", {h.lo, h.hi}}, {"counts", h.counts}};
-}
-
 std::shared_ptr<const Dataset> load_dataset(const fs::path& file, const std::string& id) {
   const fs::path base = fs::absolute(file).parent_path();
   std::string source = "'";  // appended, not "'" + ... (GCC 12's -Wrestrict misfires on that)
   source.append(printable(file.string())).append("'");
   json scene, volume_json;
   std::optional<Volume> volume;
+  std::optional<Histogram> h;  // one pass over the samples, for the description and a bare volume's scene
   if (file.extension() == ".json") {
     scene = json::parse(read_text(file), nullptr, false);
     if (!scene.is_object() || !scene.contains("volume"))
@@ -131,12 +118,14 @@ std::shared_ptr<const Dataset> load_dataset(const fs::path& file, const std::str
   } else {
     volume_json = {{"file", fs::absolute(file).lexically_normal().string()}};
     volume.emplace(load_volume(file));
-    scene = json::parse(default_scene_text(*volume));
+    h = histogram_of(*volume);
+    scene = json::parse(default_scene_text(*volume, *h));
     scene["lighting"] = lighting_json(Lighting{});
     scene["background"] = {0, 0, 0};
   }
   auto d = std::make_shared<Dataset>(Dataset{id, base, std::move(*volume), std::move(volume_json), std::move(scene), {}});
-  d->description = describe(*d, bounds_of(d->volume));
+  if (!h) h = histogram_of(d->volume);
+  d->description = describe(*d, *h);
   return d;
 }
 

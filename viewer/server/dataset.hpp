@@ -31,8 +31,6 @@ struct Dataset {
 // file cannot be read.
 std::shared_ptr<const Dataset> load_dataset(const std::filesystem::path& file, const std::string& id);
 
-// 256 counts of the volume's scalars over [min, max] (grid samples or mesh point scalars).
-nlohmann::json histogram(const Volume& volume);
 
 class DatasetCatalog {
  public:
