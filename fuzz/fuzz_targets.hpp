@@ -24,16 +24,19 @@
 #include "vri/io/npy.hpp"
 #include "vri/io/nrrd.hpp"
 #include "vri/io/raw_volume.hpp"
+#include "vri/io/tiff.hpp"
 #include "vri/io/volvis_dat.hpp"
 #include "vri/io/vti.hpp"
 #include "vri/io/vtk_legacy.hpp"
 #include "vri/io/vtu.hpp"
 #include "vri/scene/scene.hpp"
+#include "vri/transfer/paraview_colormap.hpp"
 
 namespace vri::fuzz {
 
-// A private folder per process holding the fuzzed file and two small data
-// files a detached NRRD header or a scene may name.
+// A private folder per process holding the fuzzed file, two small data files
+// a detached NRRD header or a scene may name, and a ParaView colour map (cm.json)
+// a transfer function may name.
 inline const std::filesystem::path& work_dir() {
   static const std::filesystem::path dir = [] {
     auto d = std::filesystem::temp_directory_path() / ("vri_fuzz_" + std::to_string(::getpid()));
@@ -42,6 +45,10 @@ inline const std::filesystem::path& work_dir() {
     const std::vector<std::byte> zeros(64);
     const auto gz = gzip(zeros);
     std::ofstream(d / "d.raw.gz", std::ios::binary).write(reinterpret_cast<const char*>(gz.data()), std::streamsize(gz.size()));
+    std::ofstream(d / "cm.json") << R"([{"Name": "A", "ColorSpace": "Diverging",)"
+                                 << R"( "RGBPoints": [0, 0.23, 0.3, 0.75, 1, 0.7, 0.02, 0.15],)"
+                                 << R"( "Points": [0, 0, 0.5, 0, 1, 0.8, 0.3, 0.6]},)"
+                                 << R"( {"Name": "B", "RGBPoints": [0, 0, 0, 0]}])";
     // Well under libFuzzer's rss limit (2 GB), and small enough that legitimate
     // but heavy inputs (a 64^3 grid split into 1.25 million tetrahedra) are
     // refused by the budget instead of running past the 10 s timeout under ASan.
@@ -102,6 +109,9 @@ inline void metaimage(std::span<const std::byte> data) { parse_metaimage(data, w
 
 inline void npy_volume(std::span<const std::byte> data) { parse_npy_volume(data, "fuzz.npy"); }
 
+// A multi-page TIFF in memory (libtiff through TIFFClientOpen).
+inline void tiff(std::span<const std::byte> data) { parse_tiff_volume(data, "fuzz.tif"); }
+
 inline void vtk_legacy(std::span<const std::byte> data) { parse_vtk_legacy(data, "", "fuzz.vtk"); }
 
 inline void vtu(std::span<const std::byte> data) { parse_vtu(data, "", "fuzz.vtu"); }
@@ -115,7 +125,19 @@ inline void vtk_structured_points(std::span<const std::byte> data) {
 
 inline void scene(std::span<const std::byte> data) { parse_scene(text_of(data), work_dir(), "fuzz scene"); }
 
-inline void transfer_function(std::span<const std::byte> data) { parse_transfer_function(text_of(data), "fuzz tf"); }
+// Transfer functions: every JSON form ("paraview": "cm.json" finds a preset in
+// the work folder); an input starting with '[' is a ParaView colour-map file
+// itself, read and reduced to linear pieces.
+inline void transfer_function(std::span<const std::byte> data) {
+  const std::string_view text = text_of(data);
+  if (!text.empty() && text.front() == '[') {
+    const ParaviewColormap map = parse_paraview_colormap(text, "fuzz paraview");
+    linear_colors(map);
+    if (!map.opacity.empty()) linear_opacity(map.opacity);
+    return;
+  }
+  parse_transfer_function(text, "fuzz tf", nullptr, work_dir());
+}
 
 // Runs one input; vri::Error is the expected outcome of bad input, anything
 // else escapes (libFuzzer reports it as a crash).
@@ -130,7 +152,7 @@ inline void run(const std::function<void(std::span<const std::byte>)>& target, c
 inline const std::map<std::string, std::function<void(std::span<const std::byte>)>>& targets() {
   static const std::map<std::string, std::function<void(std::span<const std::byte>)>> all = {
       {"raw", raw},         {"nrrd", nrrd}, {"nrrd_gzip", nrrd_gzip}, {"volvis_dat", volvis_dat},
-      {"vtk_legacy", vtk_legacy}, {"vtu", vtu}, {"vti", vti}, {"vtk_structured_points", vtk_structured_points}, {"metaimage", metaimage}, {"npy_volume", npy_volume}, {"scene", scene},    {"transfer_function", transfer_function}};
+      {"vtk_legacy", vtk_legacy}, {"vtu", vtu}, {"vti", vti}, {"vtk_structured_points", vtk_structured_points}, {"metaimage", metaimage}, {"npy_volume", npy_volume}, {"tiff", tiff}, {"scene", scene},    {"transfer_function", transfer_function}};
   return all;
 }
 

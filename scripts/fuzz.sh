@@ -13,11 +13,11 @@ dir=${2:-build-fuzz}
 CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRI_FUZZ=ON -DVRI_BUILD_TESTS=OFF \
   -DVRI_BUILD_BENCH=OFF >/dev/null
 cmake --build "$dir" -j "$(nproc)" --target fuzz_raw fuzz_nrrd fuzz_nrrd_gzip fuzz_volvis_dat fuzz_vtk_legacy \
-  fuzz_vtu fuzz_vti fuzz_vtk_structured_points fuzz_metaimage fuzz_npy_volume fuzz_scene fuzz_transfer_function
+  fuzz_vtu fuzz_vti fuzz_vtk_structured_points fuzz_metaimage fuzz_npy_volume fuzz_tiff fuzz_scene fuzz_transfer_function
 mkdir -p "$dir/fuzz-artifacts"
 # Seeds: small generated files (fuzz/seeds/) and the bundled small inputs.
 declare -A extra=(
-  [raw]="" [nrrd]="" [nrrd_gzip]="" [volvis_dat]="" [metaimage]="" [npy_volume]=""
+  [raw]="" [nrrd]="" [nrrd_gzip]="" [volvis_dat]="" [metaimage]="" [npy_volume]="" [tiff]=""
   [vtk_legacy]="tests/data/mesh" [vtu]="tests/data/mesh"
   [vti]="tests/data/volume" [vtk_structured_points]="tests/data/volume"
   [scene]="scenes" [transfer_function]="presets"
@@ -40,9 +40,9 @@ fuzz_one() {
 status=0
 if [ "${FUZZ_PARALLEL:-0}" = 1 ]; then  # every harness at once (the long campaign)
   pids=()
-  for h in raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu vti vtk_structured_points metaimage npy_volume scene transfer_function; do fuzz_one "$h" & pids+=($!); done
+  for h in raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu vti vtk_structured_points metaimage npy_volume tiff scene transfer_function; do fuzz_one "$h" & pids+=($!); done
   for p in "${pids[@]}"; do wait "$p" || status=1; done
 else
-  for h in raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu vti vtk_structured_points metaimage npy_volume scene transfer_function; do fuzz_one "$h" || status=1; done
+  for h in raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu vti vtk_structured_points metaimage npy_volume tiff scene transfer_function; do fuzz_one "$h" || status=1; done
 fi
 exit $status

@@ -2,7 +2,7 @@
 # install-deps.sh [--vtk]: installs vri's build and test dependencies from Debian packages.
 # Skips apt entirely when everything is already installed.
 set -euo pipefail
-pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1g-dev
+pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1g-dev libtiff-dev
       libtbb-dev libgtest-dev libbenchmark-dev python3 python3-numpy
       ccache  # scripts/test.sh: the VRI_SIMD=OFF build reuses the Release build's objects
       clang libclang-rt-14-dev  # clang + libFuzzer: the fuzz step (scripts/fuzz.sh)
@@ -11,13 +11,15 @@ pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1
       jupyter-nbconvert python3-ipykernel
       # the viewer (viewer/): Boost.Beast, JPEG frames, and its browser test's Chromium
       libboost-dev libturbojpeg0-dev chromium
-      libopenexr-dev)  # .exr output
+      libopenexr-dev  # .exr output
+      libavformat-dev libavcodec-dev libswscale-dev)  # vri turntable's .mp4
 # The browser test's driver (puppeteer-core) comes from npm: node and npm from
 # Debian unless the image has a node of its own.
 command -v node >/dev/null || pkgs+=(nodejs)
 command -v npm >/dev/null || pkgs+=(npm)
-# --vtk: also what the VTK side-by-side scripts need (scripts/vtk_*side_by_side.py).
-if [ "${1:-}" = --vtk ]; then pkgs+=(python3-vtk9 xvfb xauth); fi
+# --vtk: also what the VTK side-by-side scripts need (scripts/vtk_*side_by_side.py)
+# and the fixture generators (tools/make_*_fixtures.py: VTK, tifffile, tiffcp).
+if [ "${1:-}" = --vtk ]; then pkgs+=(python3-vtk9 xvfb xauth python3-tifffile libtiff-tools); fi
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -61,7 +61,11 @@ RenderRequest request_of(const char* function, const py::kwargs& kwargs) {
     else if (key == "strategy") o.strategy = text();
     else if (key == "max_samples") o.max_samples = number();
     else if (key == "max_work") o.max_work = number();
-    else if (key == "threads") r.threads = *integer();
+    else if (key == "jitter") {
+      const long long seed = *keyword<long long>(function, key, v);
+      if (seed < 0) throw py::value_error(std::string(function) + "(): jitter is a seed >= 0");
+      o.jitter = static_cast<std::uint64_t>(seed);
+    } else if (key == "threads") r.threads = *integer();
     else throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + key + "'");
   }
   checked_threads(r.threads);
@@ -144,7 +148,7 @@ const char* kKeywords =
     "Keyword arguments override the scene as the `vri render` flags do (None keeps the scene's):\n"
     "method, step, tolerance, table_size, iterations, width, height, threads (0: all cores),\n"
     "termination, skip_empty (False: --no-skip), double (True: --double), h0, hmin, hmax,\n"
-    "strategy, max_samples, max_work. Raises ValueError with the CLI's message for bad values.";
+    "strategy, max_samples, max_work, jitter (riemann: a seed). Raises ValueError with the CLI's message for bad values.";
 
 }  // namespace
 

@@ -19,6 +19,7 @@
 #include "commands.hpp"
 #include "exr_output.hpp"
 #include "progress_bar.hpp"
+#include "scene_options.hpp"
 #include "vri/core/error.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
 #include "vri/io/file_io.hpp"
@@ -35,11 +36,9 @@ namespace {
 
 struct RenderArgs {
   std::string scene, output;
-  SceneOverrides overrides;
-  bool no_skip = false, double_math = false, fit = false, quiet = false;
-  std::string background;  // "none" (PNG with alpha) or "R,G,B"
+  SceneFlags flags;
+  bool quiet = false;
   int png_bits = 8;
-  int threads = 0;
   std::optional<std::string> error_estimate, trace;
   std::vector<int> trace_pixel;
 };
@@ -58,34 +57,19 @@ std::string trace_csv(const Ray& ray, const ErrorEstimatingIntegrator& integrato
   return csv.str();
 }
 
-// --background R,G,B: three numbers in [0, 1].
-Vec3 parse_background(const std::string& text) {
-  double v[3];
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &tail) != 3 ||
-      !std::all_of(v, v + 3, [](double x) { return x >= 0 && x <= 1; }))
-    throw Error("--background must be 'none' or three numbers in [0, 1] such as 0.1,0.1,0.2, not '" + text + "'");
-  return {v[0], v[1], v[2]};
-}
-
-int run_render(RenderArgs args) {
+int run_render(const RenderArgs& args) {
   const std::filesystem::path out(args.output);
   const std::string ext = out.extension().string();
   if (ext != ".npy" && ext != ".png" && ext != ".exr")
     throw Error("output '" + args.output + "' must end in .npy, .png or .exr");
   if (ext == ".exr" && !exr_supported()) write_exr(out, Image());  // says why, before any work
   if (args.png_bits != 8 && args.png_bits != 16) throw Error("--png-bits must be 8 or 16");
-  if ((args.png_bits != 8 || args.background == "none") && ext != ".png")
+  if ((args.png_bits != 8 || args.flags.background == "none") && ext != ".png")
     throw Error("--png-bits and --background none apply to .png output");
-  PngFormat png{.transparent = args.background == "none", .bits = args.png_bits};
-  const int threads = checked_threads(args.threads);
+  PngFormat png{.transparent = args.flags.background == "none", .bits = args.png_bits};
+  const int threads = checked_threads(args.flags.threads);
 
-  Scene scene = load_scene(args.scene);
-  if (args.no_skip) args.overrides.skip_empty = false;
-  if (args.double_math) args.overrides.float_math = false;
-  if (args.fit) args.overrides.fit = true;
-  apply_overrides(scene, args.overrides);
-  if (!args.background.empty() && args.background != "none") scene.background = parse_background(args.background);
+  const Scene scene = args.flags.load(args.scene);
   if (args.error_estimate && std::filesystem::path(*args.error_estimate).extension() != ".npy")
     throw Error("--error-estimate '" + *args.error_estimate + "' must end in .npy");
   if (args.trace.has_value() != !args.trace_pixel.empty()) throw Error("--trace and --trace-pixel go together");
@@ -138,34 +122,9 @@ Runner add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to .npy (float RGBA) or .png");
   cmd->add_option("scene", args->scene, "Scene JSON file")->required();
   cmd->add_option("-o,--output", args->output, "Output image (.npy, .png or .exr)")->required();
-  cmd->add_option("--background", args->background,
-                  "PNG: 'none' keeps alpha (straight colour, no background); or R,G,B in [0, 1] over the scene's");
+  args->flags.add_to(cmd);
   cmd->add_option("--png-bits", args->png_bits, "PNG: 8 (default) or 16 bits a channel");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line (it shows only on a terminal, after a second)");
-  cmd->add_option("--method", args->overrides.method, "Integration method (overrides the scene)");
-  cmd->add_option("--step", args->overrides.step, "Step size in voxel units");
-  cmd->add_option("--tolerance", args->overrides.tolerance, "Error tolerance (exact, adaptive)");
-  cmd->add_option("--table-size", args->overrides.table_size, "Pre-integration table size");
-  cmd->add_option("--iterations", args->overrides.iterations, "preint2*: parabola chords per table entry (1..4096; default 8)");
-  cmd->add_option("--termination", args->overrides.termination,
-                  "riemann, preint1, preint2, preint2-dual: stop a ray once its transmittance is below this (0: off)");
-  cmd->add_flag("--no-skip", args->no_skip,
-                "riemann, preint1, preint2, preint2-dual: march through empty space too (the plain path)");
-  cmd->add_flag("--double", args->double_math, "riemann, preint1, preint2, preint2-dual: sample, look up and composite in double (the reference of their float paths)");
-  cmd->add_option("--width", args->overrides.width, "Image width in pixels");
-  cmd->add_option("--height", args->overrides.height, "Image height in pixels");
-  cmd->add_flag("--fit", args->fit, "Frame the volume's box (as ParaView's reset camera), then apply the motions");
-  cmd->add_option("--azimuth", args->overrides.azimuth, "Turn the eye about the up vector (degrees, VTK's Azimuth)");
-  cmd->add_option("--elevation", args->overrides.elevation, "Raise the eye towards the up vector (degrees)");
-  cmd->add_option("--roll", args->overrides.roll, "Turn the up vector about the view direction (degrees)");
-  cmd->add_option("--zoom", args->overrides.zoom, "Magnify by this factor (VTK's Zoom: narrows the field of view)");
-  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores; at most 1024)");
-  cmd->add_option("--max-samples", args->overrides.max_samples, "Cap on samples per ray (default 1e7; scene method.max_samples)");
-  cmd->add_option("--max-work", args->overrides.max_work, "Cap on samples per ray x pixels (default 2e10; scene method.max_work)");
-  cmd->add_option("--h0", args->overrides.h0, "adaptive: initial step (voxel units)");
-  cmd->add_option("--hmin", args->overrides.hmin, "adaptive: smallest step (voxel units)");
-  cmd->add_option("--hmax", args->overrides.hmax, "adaptive: largest step (voxel units)");
-  cmd->add_option("--strategy", args->overrides.strategy, "adaptive: coupled, decoupled or guaranteed");
   cmd->add_option("--error-estimate", args->error_estimate, "adaptive: write the per-pixel error estimate (.npy)");
   cmd->add_option("--trace-pixel", args->trace_pixel, "adaptive: pixel PX PY whose steps --trace writes")
       ->expected(2);

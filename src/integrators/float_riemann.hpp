@@ -11,7 +11,10 @@
 // double path's by a few float roundings per step (tests bound it by 1e-4
 // per channel on the bundled scenes); it depends only on its ray.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 
 #include "float_math.hpp"
 #include "float_shading.hpp"
@@ -37,18 +40,40 @@ inline void riemann_step(const FloatTransferFunction::Sample& v, const FloatShad
   riemann_step({v.r * lit.a + lit.b, v.g * lit.a + lit.b, v.b * lit.a + lit.b, v.tau}, h_k, C, T);
 }
 
+// Jitter (riemann.hpp): u in [0, 1) from the bits of the ray and the seed,
+// through splitmix64 (Steele, Lea & Flood 2014), so equal rays get equal u.
+inline double jitter_fraction(const Ray& ray, std::uint64_t seed) {
+  auto mix = [](std::uint64_t z) {
+    z += 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  };
+  std::uint64_t h = mix(seed);
+  for (const double v : {ray.origin.x, ray.origin.y, ray.origin.z, ray.dir.x, ray.dir.y, ray.dir.z})
+    h = mix(h ^ std::bit_cast<std::uint64_t>(v));
+  return static_cast<double>(h >> 11) * 0x1p-53;
+}
+
+// The last sample at or before t_end of the steps of h from iv.t0 whose
+// samples sit u h into their step (u = 0: at its front; with jitter, u of
+// jitter_fraction; the partial last step's sample lies before that).
+inline long long last_sample_before(double t_end, const Interval& iv, double h, double u) {
+  return static_cast<long long>(std::floor((t_end - iv.t0) / h - u));
+}
+
 // The head of a stretch of riemann's float march at sample k: a leap over the
 // empty macro cells from t_k (k moves past them) until a sample in a
 // non-empty run; returns the sample where the next query is due (k + 1 at
 // least), or n once no query is needed. The packets run the same per lane.
 inline long long riemann_head(const Leap& leap, const Ray& ray, const Interval& iv, double h, long long n,
-                              long long& k) {
+                              long long& k, double u = 0) {
   if (!leap.space) return n;
   while (k < n) {
     const EmptySpace::Run run = leap.space->run(ray, iv.t0 + k * h, iv.t1);
     if (!run.empty)
-      return std::clamp(static_cast<long long>(std::ceil((run.t_end - iv.t0) / h)), k + 1, n);
-    k = std::max(k, static_cast<long long>(std::floor((run.t_end - iv.t0) / h))) + 1;  // samples up to t_end add nothing
+      return std::clamp(static_cast<long long>(std::ceil((run.t_end - iv.t0) / h - u)), k + 1, n);
+    k = std::max(k, last_sample_before(run.t_end, iv, h, u)) + 1;  // samples up to t_end add nothing
   }
   return n;
 }
@@ -63,9 +88,10 @@ inline long long riemann_samples(const Interval& iv, double h) {
 template <class Value>
 Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, const Value* values,
                          const FloatTransferFunction& tf, const FloatShading* shading, const Ray& ray, double h,
-                         const Leap& leap) {
+                         const Leap& leap, std::optional<std::uint64_t> jitter = {}) {
   const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
   if (!iv) return {0, 0, 0, 0};
+  const double u = jitter ? jitter_fraction(ray, *jitter) : 0.0;  // the sample's place in its step
   const long long n = riemann_samples(*iv, h);
   const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
   const float termination = static_cast<float>(leap.termination);
@@ -73,15 +99,16 @@ Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, 
   Float4 C = {0, 0, 0, 0};
   float T = 1;
   for (long long k = 0; k < n;) {
-    const long long stop = riemann_head(leap, ray, *iv, h, n, k);
+    const long long stop = riemann_head(leap, ray, *iv, h, n, k, u);
     for (; k < stop; ++k) {
       const double h_k = std::min(h, iv->t1 - (iv->t0 + k * h));
       if (T < termination || !(h_k > 0)) return {C[0], C[1], C[2], 1 - T};
+      const Vec3 at = u0 + (static_cast<double>(k) + u * h_k / h) * du;
       if (!shading) {
-        riemann_step(tf(sampler.at(values, u0 + static_cast<double>(k) * du)), static_cast<float>(h_k), C, T);
+        riemann_step(tf(sampler.at(values, at)), static_cast<float>(h_k), C, T);
         continue;
       }
-      const FloatSampler::Cell cell = sampler.cell(u0 + static_cast<double>(k) * du);
+      const FloatSampler::Cell cell = sampler.cell(at);
       const float s = FloatSampler::interpolate(corners_as_float(values + cell.offset, sampler.stride_y(),
                                                                  sampler.stride_z()),
                                                 cell.f);

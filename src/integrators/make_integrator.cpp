@@ -37,6 +37,12 @@ bool is_mesh_method(const std::string& name) {
 
 }  // namespace
 
+void check_jitter(const MethodSpec& spec) {
+  if (spec.jitter && spec.name != "riemann")
+    throw Error(spec.name + ": jitter applies to riemann only (the pre-integrated methods integrate between their "
+                "samples, so their rings are faint; exact and adaptive place no fixed samples)");
+}
+
 const std::vector<std::string>& known_method_names() {
   static const std::vector<std::string> names = {
       "riemann", "preint1", "preint2", "preint2-dual", "adaptive",
@@ -46,7 +52,9 @@ const std::vector<std::string>& known_method_names() {
 
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
                                             const TransferFunction& tf, const Lighting& lighting) {
-  if (spec.name == "riemann") return std::make_unique<RiemannIntegrator>(volume, tf, spec.step, lighting, spec.fast);
+  if (spec.name == "riemann")
+    return std::make_unique<RiemannIntegrator>(volume, tf, spec.step, lighting, spec.fast, spec.jitter);
+  check_jitter(spec);
   if (spec.name == "preint1")
     return std::make_unique<Preint1Integrator>(volume, tf, spec.step, spec.table_size, spec.builder, lighting,
                                                spec.fast);
@@ -77,6 +85,7 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
 
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
                                             const TransferFunction& tf, const Lighting& lighting) {
+  check_jitter(spec);
   if (spec.fast.termination != 0)
     throw Error(spec.name + ": early ray termination is not supported on tetrahedral meshes yet");
   if (spec.name == "exact") return std::make_unique<MeshExactIntegrator>(mesh, tf, spec.tolerance, lighting);

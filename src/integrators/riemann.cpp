@@ -11,14 +11,16 @@
 namespace vri {
 
 RiemannIntegrator::RiemannIntegrator(const GridVolume& volume, const TransferFunction& tf,
-                                     double step, const Lighting& lighting, const FastPath& fast)
+                                     double step, const Lighting& lighting, const FastPath& fast,
+                                     std::optional<std::uint64_t> jitter)
     : volume_(volume),
       tf_(tf),
       fast_(volume, ZeroOpacity(tf), fast, "riemann"),
       float_path_(fast.float_math),
       float_sampler_(volume),
       float_tf_(tf),
-      packets_(float_path_ && detail::packets_fit(volume)) {
+      jitter_(jitter),
+      packets_(float_path_ && !jitter && detail::packets_fit(volume)) {
   if (lighting.enabled) shader_.emplace(lighting, volume);
   if (lighting.enabled && float_path_)
     float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
@@ -33,7 +35,7 @@ Rgba RiemannIntegrator::integrate(const Ray& ray) const {
   return volume_.visit([&](auto values) {
     if (float_path_)
       return detail::march_riemann_float(volume_, float_sampler_, values.data(), float_tf_, float_shading_.get(), ray,
-                                         h_, {fast_.space(), fast_.termination()});
+                                         h_, {fast_.space(), fast_.termination()}, jitter_);
     return march(ray, values.data());
   });
 }
@@ -42,23 +44,24 @@ template <class Value>
 Rgba RiemannIntegrator::march(const Ray& ray, const Value* values) const {
   const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
   if (!iv) return {0, 0, 0, 0};
+  const double u = jitter_ ? detail::jitter_fraction(ray, *jitter_) : 0.0;  // the sample's place in its step
   const long long n = detail::riemann_samples(*iv, h_);
   double T = 1, C[3] = {0, 0, 0};
   const EmptySpace* space = fast_.space();
   double t_check = -std::numeric_limits<double>::infinity();  // in a non-empty macro cell until then
   for (long long k = 0; k < n && !(T < fast_.termination()); ++k) {
-    const double t = iv->t0 + k * h_;
-    const double hk = std::min(h_, iv->t1 - t);
+    const double t_k = iv->t0 + k * h_;  // the step [t_k, t_k + hk]
+    const double hk = std::min(h_, iv->t1 - t_k);
     if (!(hk > 0)) break;
-    if (space && t >= t_check) {
-      const EmptySpace::Run run = space->run(ray, t, iv->t1);
+    if (space && t_k >= t_check) {
+      const EmptySpace::Run run = space->run(ray, t_k, iv->t1);
       t_check = run.t_end;
       if (run.empty) {  // samples k .. up to run.t_end add nothing
-        k = std::max(k, static_cast<long long>(std::floor((run.t_end - iv->t0) / h_)));
+        k = std::max(k, detail::last_sample_before(run.t_end, *iv, h_, u));
         continue;
       }
     }
-    const Vec3 p = ray.at(t);
+    const Vec3 p = ray.at(t_k + u * hk);
     const TfSample v = tf_(volume_.sample(values, p));
     if (v.tau == 0) continue;
     const double a = -std::expm1(-v.tau * hk);  // 1 - exp(-tau h), accurate for small tau h

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <system_error>
 #include <vector>
 
 #include "vri/core/error.hpp"
@@ -41,6 +42,9 @@ VolumeFormat volume_format(std::span<const std::byte> head, const std::filesyste
   const std::string_view text = as_text(head);
   if (starts_with(text, "NRRD000")) return VolumeFormat::Nrrd;
   if (starts_with(text, "\x93NUMPY")) return VolumeFormat::Npy;
+  using namespace std::string_view_literals;
+  for (std::string_view magic : {"II*\0"sv, "MM\0*"sv, "II+\0"sv, "MM\0+"sv})
+    if (starts_with(text, magic)) return VolumeFormat::Tiff;
   if (starts_with(text, "# vtk DataFile"))
     return vtk_legacy_is_structured_points(head) ? VolumeFormat::VtkStructuredPoints : VolumeFormat::VtkLegacyMesh;
   if (const std::size_t tag = text.find("<VTKFile"); tag != std::string_view::npos) {
@@ -59,8 +63,10 @@ VolumeFormat volume_format(std::span<const std::byte> head, const std::filesyste
 }
 
 VolumeFormat volume_format(const std::filesystem::path& path) {
-  // The first KiB, or the whole file if shorter (the same errors as every reader: a
-  // missing file, a folder, no permission).
+  // A folder holds TIFF slices; otherwise the first KiB, or the whole file if
+  // shorter (the same errors as every reader: a missing file, no permission).
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) return VolumeFormat::Tiff;
   const std::uint64_t size = checked_file_size(path);
   std::vector<std::byte> head(std::size_t(std::min<std::uint64_t>(size, 1024)));
   read_file_range(path, 0, head);
@@ -78,6 +84,7 @@ std::string_view format_name(VolumeFormat format) {
     case VolumeFormat::VtkStructuredPoints: return "legacy VTK structured points";
     case VolumeFormat::MetaImage: return "MetaImage";
     case VolumeFormat::Npy: return "NumPy";
+    case VolumeFormat::Tiff: return "TIFF";
     case VolumeFormat::VtkLegacyMesh: return "legacy VTK unstructured grid";
     case VolumeFormat::Vtu: return "VTK XML unstructured grid";
   }
@@ -86,7 +93,8 @@ std::string_view format_name(VolumeFormat format) {
 
 std::string_view supported_formats() {
   return "NRRD (.nrrd, .nhdr), VTK (.vti, .vtk structured points; meshes .vtk, .vtu), MetaImage (.mhd, .mha), "
-         "NumPy (.npy), volvis (.dat), or headerless raw with 'dims' and 'type'";
+         "NumPy (.npy), TIFF (.tif, .tiff stacks, or a folder of one-page slices), volvis (.dat), or headerless "
+         "raw with 'dims' and 'type'";
 }
 
 }  // namespace vri

@@ -36,6 +36,7 @@ SceneRenderer::SceneRenderer(const Scene& scene) : scene_(checked(scene)), camer
         scene.volume);
     return;
   }
+  check_jitter(m);
   if (m.fast.termination != 0)
     throw Error(m.name + ": early ray termination is not supported yet; it works in riemann, preint1, preint2 and preint2-dual");
   projected_ = std::make_unique<Projected>();

@@ -14,11 +14,11 @@
 #include "vri/camera/framing.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
-#include "vri/io/file_io.hpp"
 #include "vri/io/metaimage.hpp"
 #include "vri/io/npy.hpp"
 #include "vri/io/nrrd.hpp"
 #include "vri/io/raw_volume.hpp"
+#include "vri/io/tiff.hpp"
 #include "vri/io/volume_file.hpp"
 #include "vri/io/volvis_dat.hpp"
 #include "vri/io/vti.hpp"
@@ -29,6 +29,8 @@
 #include "vri/mesh/tetrahedralize.hpp"
 #include "vri/scene/scene.hpp"
 #include "vri/volume/builtin_volumes.hpp"
+#include "core/json_support.hpp"
+#include "scene/transfer_function_json.hpp"
 
 namespace vri {
 
@@ -37,42 +39,7 @@ using json = nlohmann::json;
 
 namespace {
 
-// nlohmann's parse errors carry the byte offset; they gain the file's name.
-json parse_json(std::string_view text, const std::string& source) {
-  try {
-    return json::parse(text);
-  } catch (const json::exception& e) {  // parse_error, or out_of_range for a number like 1E99999
-    std::string what = e.what();
-    if (auto p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
-    throw Error(source + ": malformed JSON: " + printable(what, 200));
-  }
-}
-
-std::string text_of(const fs::path& path) {
-  const auto bytes = read_file(path);
-  return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-}
-
-// A JSON value as the user wrote it, escaped and short, for "found ...".
-std::string found(const json& v) {
-  return printable(v.dump(-1, ' ', false, json::error_handler_t::replace), 40);
-}
-
-// Levenshtein distance, for "did you mean" on unknown keys.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t k = 0; k <= b.size(); ++k) row[k] = k;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t k = 1; k <= b.size(); ++k) {
-      const std::size_t up = row[k];
-      row[k] = std::min({row[k] + 1, row[k - 1] + 1, diag + (a[i - 1] != b[k - 1])});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
+// parse_json, text_of, found and key_suggestion: core/json_support.hpp.
 
 // Typed access to one object of the scene; every error names the file, the
 // key path, what was expected and what was found.
@@ -104,19 +71,7 @@ struct Reader {
     for (const auto& item : j.items()) {
       const std::string& key = item.key();
       if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
-      std::string_view best;
-      std::size_t best_d = std::string::npos;
-      for (std::string_view k : keys)
-        if (const std::size_t d = edit_distance(key, k); d < best_d) best = k, best_d = d;
-      std::string msg = where(printable(key, 40)) + ": unknown key";
-      if (best_d <= std::max<std::size_t>(2, best.size() / 3)) {
-        msg += " (did you mean '" + std::string(best) + "'?)";
-      } else {
-        msg += " (known:";
-        for (std::string_view k : keys) (msg += ' ') += k;
-        msg += ")";
-      }
-      throw Error(msg);
+      throw Error(where(printable(key, 40)) + ": unknown key" + key_suggestion(key, keys));
     }
   }
   double number(const json& j, const char* key, std::optional<double> def = std::nullopt) const {
@@ -201,37 +156,6 @@ constexpr std::array<std::string_view, 15> kVolumeKeys = {
     "builtin", "dims", "f_m", "alpha", "radius", "seed", "file", "type", "endian",
     "spacing", "origin", "scalars", "grid", "tets_per_cell", "allow_outside_paths"};
 
-TransferFunction transfer_function_from(const json& j, const Reader& r, bool may_name_file) {
-  r.object(j);
-  if (may_name_file) r.known(j, {"points", "opacity_points", "unit_distance", "file"});
-  else r.known(j, {"points", "opacity_points", "unit_distance"});
-  auto rows = [&](const char* key) {
-    const json& a = j.at(key);
-    if (!a.is_array() || a.empty()) r.expected(key, "a non-empty array", a);
-    std::vector<std::vector<double>> out;
-    for (std::size_t i = 0; i < a.size(); ++i)
-      out.push_back(r.numbers(a[i], std::string(key) + "[" + std::to_string(i) + "]", 5));
-    return out;
-  };
-  try {
-    if (j.contains("points")) {
-      std::vector<ControlPoint> cps;
-      for (const auto& p : rows("points")) cps.push_back({p[0], p[1], p[2], p[3], p[4]});
-      return TransferFunction(std::move(cps));
-    }
-    if (j.contains("opacity_points")) {
-      std::vector<TransferFunction::OpacityPoint> ops;
-      for (const auto& p : rows("opacity_points")) ops.push_back({p[0], p[1], p[2], p[3], p[4]});
-      return TransferFunction::from_opacity(ops, r.number(j, "unit_distance"));
-    }
-  } catch (const Error& e) {
-    const std::string msg = e.what();
-    if (msg.rfind(r.file, 0) == 0) throw;
-    throw Error(r.ctx() + ": " + msg);
-  }
-  throw Error(r.ctx() + ": needs 'points' or 'opacity_points'");
-}
-
 GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r) {
   r.object(j);
   r.known(j, kVolumeKeys);
@@ -277,6 +201,7 @@ GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r
       case VolumeFormat::VtkStructuredPoints: vol.emplace(read_vtk_structured_points(file, scalars)); break;
       case VolumeFormat::MetaImage: vol.emplace(read_metaimage(file, MetaImageOptions{outside})); break;
       case VolumeFormat::Npy: vol.emplace(read_npy_volume(file)); break;
+      case VolumeFormat::Tiff: vol.emplace(read_tiff_volume(file)); break;
       case VolumeFormat::VtkLegacyMesh:
       case VolumeFormat::Vtu:
         throw Error(r.ctx() + ": '" + printable(file.string()) + "' is a tetrahedral mesh, not a regular grid");
@@ -403,7 +328,8 @@ MethodSpec method_from(const json& mj, const Reader& top) {
   const Reader m = top.child("method");
   m.object(mj);
   m.known(mj, {"name", "step", "tolerance", "table_size", "length_samples", "planes", "iterations", "h0", "hmin",
-               "hmax", "strategy", "builder", "termination", "skip_empty", "float_math", "max_samples", "max_work"});
+               "hmax", "strategy", "builder", "termination", "skip_empty", "float_math", "max_samples", "max_work",
+               "jitter"});
   MethodSpec method;
   method.name = m.string(mj, "name", "exact");
   method.step = positive(m, mj, "step", method.step);
@@ -434,6 +360,9 @@ MethodSpec method_from(const json& mj, const Reader& top) {
   method.fast.float_math = m.boolean(mj, "float_math", method.fast.float_math);
   method.max_samples = double(m.integer_in(mj, "max_samples", 1, std::int64_t(1) << 53, std::int64_t(method.max_samples)));
   method.max_work = double(m.integer_in(mj, "max_work", 1, std::int64_t(1) << 53, std::int64_t(method.max_work)));
+  // riemann's jitter (riemann.hpp): its seed, an integer JSON's doubles hold exactly.
+  if (mj.contains("jitter"))
+    method.jitter = static_cast<std::uint64_t>(m.integer_in(mj, "jitter", 0, std::int64_t(1) << 53, 0));
   return method;
 }
 
@@ -457,17 +386,9 @@ Lighting lighting_from(const json& lj, const Reader& top) {
 
 }  // namespace
 
-TransferFunction parse_transfer_function(std::string_view text, const std::string& source) {
-  return transfer_function_from(parse_json(text, source), Reader{source, ""}, false);
-}
-
 CameraSpec parse_camera(std::string_view text, const std::string& source) {
   const Reader r{source, ""};
   return place_camera(camera_from(parse_json(text, source), r), nullptr, r);
-}
-
-TransferFunction load_transfer_function(const fs::path& path) {
-  return parse_transfer_function(text_of(path), "transfer function '" + printable(path.string()) + "'");
 }
 
 namespace {
@@ -495,19 +416,22 @@ Scene scene_from(std::string_view text, const fs::path& base, const std::string&
 
   const json& tfj = j.at("transfer_function");
   const Reader t = r.child("transfer_function");
-  std::optional<TransferFunction> tf;
+  // Read and checked before the volume is loaded; a "range" of "data" or
+  // percentiles is resolved on the volume after.
+  std::optional<TransferFunctionRequest> tf;
   if (tfj.is_object() && tfj.contains("file")) {
     t.known(tfj, {"file"});
     fs::path file = t.string(tfj, "file");
     if (file.is_relative()) file = base / file;
-    tf.emplace(load_transfer_function(file));
+    tf.emplace(transfer_function_request(file));
   } else {
-    tf.emplace(transfer_function_from(tfj, t, true));
+    tf.emplace(tfj, t.file, t.path, base, true);
   }
 
   Volume volume = given ? std::move(*given) : volume_from(j.at("volume"), base, r);
   const CameraSpec placed = place_camera(camera, &volume, r);
-  return Scene{std::move(volume), std::move(*tf), placed, lighting, background, method};
+  TransferFunction resolved = tf->resolve(&volume);
+  return Scene{std::move(volume), std::move(resolved), placed, lighting, background, method};
 }
 
 }  // namespace

@@ -28,6 +28,7 @@ void apply_overrides(Scene& scene, const SceneOverrides& o) {
   if (o.float_math) m.fast.float_math = *o.float_math;
   if (o.max_samples) m.max_samples = *o.max_samples;
   if (o.max_work) m.max_work = *o.max_work;
+  if (o.jitter) m.jitter = *o.jitter;
   if (o.fit.value_or(false)) {
     const auto [lo, hi] = bounds(scene.volume);
     scene.camera = frame_box(lo, hi, scene.camera);

@@ -38,6 +38,21 @@ TEST(InfoCommand, RawNeedsDimsAndCountsEverySample) {
   EXPECT_EQ(total, 64LL * 64 * 64);
 }
 
+TEST(InfoCommand, DescribesTiffStacksAndSliceFolders) {
+  TempDir dir;
+  const ProcessResult stack = run("info " + source_path("tests/data/volume/tiff_u16_lzw.tif"), dir);
+  ASSERT_EQ(stack.code, 0) << stack.err;
+  EXPECT_NE(stack.out.find("(TIFF)"), std::string::npos) << stack.out;
+  EXPECT_NE(stack.out.find("dims: 9 x 6 x 4 (216 samples)"), std::string::npos) << stack.out;
+  EXPECT_NE(stack.out.find("stored as: uint16"), std::string::npos) << stack.out;
+  const ProcessResult folder = run("info " + source_path("tests/data/volume/tiff_slices"), dir);
+  ASSERT_EQ(folder.code, 0) << folder.err;
+  EXPECT_NE(folder.out.find("dims: 6 x 5 x 11 (330 samples)"), std::string::npos) << folder.out;
+  const ProcessResult rgb = run("info " + source_path("tests/data/volume/tiff_err_rgb.tif"), dir);
+  EXPECT_EQ(rgb.code, 1);
+  EXPECT_EQ(std::count(rgb.err.begin(), rgb.err.end(), '\n'), 1) << rgb.err;
+}
+
 TEST(InfoCommand, MeshesAndBadInput) {
   TempDir dir;
   const ProcessResult mesh = run("info " + source_path("data/blunt_fin_tet.vtk") + " --scalars density", dir);

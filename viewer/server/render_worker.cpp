@@ -99,7 +99,7 @@ void RenderWorker::open(const std::string& id) {
                   {"current", dataset_->id},
                   {"scene", dataset_->scene_json},
                   {"methods", methods_for(*dataset_)},
-                  {"presets", transfer_presets()}};
+                  {"presets", transfer_presets(dataset_->volume)}};
   welcome.update(dataset_->description);
   output_.text(welcome.dump());
 }

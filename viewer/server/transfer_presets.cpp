@@ -1,10 +1,12 @@
 #include "transfer_presets.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "embedded_files.hpp"
 #include "scene_json.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/transfer/colormap.hpp"
 
 namespace vri::viewer {
 
@@ -19,6 +21,19 @@ const nlohmann::json& transfer_presets() {
     return list;
   }();
   return presets;
+}
+
+nlohmann::json transfer_presets(const Volume& volume) {
+  nlohmann::json list = transfer_presets();
+  const auto [lo, hi] = bounds(volume);
+  const double tau = std::log(2.0) / (0.1 * std::max(length(hi - lo), 1e-9));
+  for (const std::string& name : colormap_names()) {
+    const nlohmann::json tf = {{"colormap", name}, {"range", "data"}, {"opacity", {{0, 0}, {1, tau}}}};
+    list.push_back({{"name", "colormap: " + name},
+                    {"transfer_function",
+                     transfer_function_json(parse_transfer_function(tf.dump(), "colormap " + name, &volume))}});
+  }
+  return list;
 }
 
 }  // namespace vri::viewer

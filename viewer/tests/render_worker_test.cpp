@@ -86,6 +86,11 @@ TEST_F(WorkerFixture, WelcomesWithTheDatasetAndItsScene) {
   EXPECT_EQ(welcome["volume"]["kind"], "grid");
   EXPECT_EQ(welcome["histogram"]["counts"].size(), 256u);
   EXPECT_FALSE(welcome["presets"].empty());
+  // The named colour maps follow the bundled presets, over neghip's data range (0..255).
+  const json& last = welcome["presets"].back();
+  EXPECT_EQ(last["name"], "colormap: rainbow_uniform");
+  EXPECT_EQ(last["transfer_function"]["points"].front()[0], 0.0);
+  EXPECT_EQ(last["transfer_function"]["points"].back()[0], 255.0);
   EXPECT_EQ(welcome["methods"][0], "preint1");
 }
 

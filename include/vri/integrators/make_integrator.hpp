@@ -15,6 +15,9 @@
 
 namespace vri {
 
+// vri::Error if `spec` asks for jitter (MethodSpec::jitter) of a method other than riemann.
+void check_jitter(const MethodSpec& spec);
+
 // Every method name of SPEC §9, implemented or not.
 const std::vector<std::string>& known_method_names();
 

@@ -1,6 +1,8 @@
 #pragma once
 // MethodSpec: the "method" block of a scene (SPEC §8, §9) - which integrator
 // and its parameters. Step sizes are in voxel units (SPEC §1).
+#include <cstdint>
+#include <optional>
 #include <string>
 
 #include "vri/integrators/fast_path.hpp"
@@ -31,6 +33,9 @@ struct MethodSpec {
   // Caps checked before rendering (issue 17): samples along one ray and
   // samples in all (per ray x pixels); raised by max_samples / max_work.
   double max_samples = 1e7, max_work = 2e10;
+  // riemann: the seed of the per-pixel jitter of the first sample (issue 20;
+  // riemann.hpp), against wood-grain rings; none: no jitter.
+  std::optional<std::uint64_t> jitter{};
 };
 
 }  // namespace vri

@@ -11,6 +11,16 @@
 // Unless fast.float_math is off, riemann works in float on the same sample
 // positions (float_riemann.hpp; lit, float_shading.hpp), on packets of 8 rays
 // where the CPU has AVX2.
+//
+// Jitter (issue 20; `jitter`, a seed): the samples of a fixed step sit at the
+// same depths behind the box face in every pixel, and features cut by those
+// shells show as wood-grain rings. With jitter the steps stay where they are,
+// but each ray samples its steps u of the way in, u in [0, 1) drawn from the
+// ray's bits and the seed (so the same image for any thread count):
+// t_k + u h_k. Over u that is exact in expectation for the optical depth (the
+// mean of f(t_k + u h) over u is f's mean over the step), and the rings
+// become fine noise. With jitter, rays are marched one by one (no packets).
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -32,7 +42,8 @@ class RiemannIntegrator final : public Integrator {
  public:
   // step in voxel units; throws vri::Error unless 1e-4 <= step <= 1e4.
   RiemannIntegrator(const GridVolume& volume, const TransferFunction& tf, double step,
-                    const Lighting& lighting = {}, const FastPath& fast = {});
+                    const Lighting& lighting = {}, const FastPath& fast = {},
+                    std::optional<std::uint64_t> jitter = {});
   ~RiemannIntegrator() override;
   Rgba integrate(const Ray& ray) const override;
   // On the float path, on a CPU with AVX2: packets of 8 neighbouring
@@ -54,6 +65,7 @@ class RiemannIntegrator final : public Integrator {
   FloatSampler float_sampler_;
   FloatTransferFunction float_tf_;
   std::unique_ptr<detail::FloatShading> float_shading_;  // lit, on the float path
+  std::optional<std::uint64_t> jitter_;  // the seed
   bool packets_;  // integrate_row marches packets
 };
 

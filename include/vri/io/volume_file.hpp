@@ -17,15 +17,18 @@ enum class VolumeFormat {
   VtkStructuredPoints,  // legacy VTK, DATASET STRUCTURED_POINTS
   MetaImage,            // ITK's .mhd / .mha
   Npy,                  // NumPy, indexed [z, y, x]
+  Tiff,                 // a multi-page TIFF (page = z, row = y), or a folder of one-page slices
   VtkLegacyMesh,        // legacy VTK, DATASET UNSTRUCTURED_GRID (a tetrahedral mesh)
   Vtu,                  // VTK XML unstructured grid (a tetrahedral mesh)
 };
 
 // The format of the first bytes `head` (up to 1 KiB) of a file called `name`:
-// the magic bytes decide; without them .dat is volvis and anything else raw.
+// the magic bytes decide ("II*\0", "MM\0*" and BigTIFF's "II+\0", "MM\0+"
+// are TIFF); without them .dat is volvis and anything else raw.
 // vri::Error for a VTK XML file of another data set type.
 VolumeFormat volume_format(std::span<const std::byte> head, const std::filesystem::path& name);
-// The same for a file on disk (its first KiB); vri::FileError if it cannot be read.
+// The same for a file on disk (its first KiB); a folder is a folder of TIFF
+// slices (vri/io/tiff.hpp). vri::FileError if it cannot be read.
 VolumeFormat volume_format(const std::filesystem::path& path);
 
 bool is_mesh(VolumeFormat format);

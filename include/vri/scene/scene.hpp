@@ -50,9 +50,15 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& base_
 Scene parse_scene(std::string_view json_text, Volume volume, const std::filesystem::path& base_dir,
                   const std::string& source_name = "scene");
 
-// A transfer function on its own: {"points": ...} or {"opacity_points": ..., "unit_distance": u}.
-TransferFunction load_transfer_function(const std::filesystem::path& path);
-TransferFunction parse_transfer_function(std::string_view json_text, const std::string& source_name = "transfer function");
+// A transfer function on its own: {"points": ...}, {"opacity_points": ...,
+// "unit_distance": u}, {"colormap": NAME, ...} or {"paraview": FILE, ...}, with
+// an optional "range" (docs/SCENES.md, "Transfer functions"). A "range" of
+// "data" or percentiles (and a colour map without "range") needs `volume`:
+// without one it is a vri::Error saying to give [lo, hi]. A relative
+// "paraview" path resolves against the file's folder, or `base_dir`.
+TransferFunction load_transfer_function(const std::filesystem::path& path, const Volume* volume = nullptr);
+TransferFunction parse_transfer_function(std::string_view json_text, const std::string& source_name = "transfer function",
+                                         const Volume* volume = nullptr, const std::filesystem::path& base_dir = ".");
 // A "camera" block on its own (SPEC §6), checked as in a scene; errors name `source_name`: camera.
 CameraSpec parse_camera(std::string_view json_text, const std::string& source_name = "scene");
 

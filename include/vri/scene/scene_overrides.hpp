@@ -2,6 +2,7 @@
 // SceneOverrides: what a caller changes in a loaded scene before rendering it
 // (the `vri render` flags, the keyword arguments of the Python vri.render).
 // One place applies them, so both front ends follow the same rules.
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,7 @@ struct SceneOverrides {
   std::optional<double> step, tolerance, termination, max_samples, max_work, h0, hmin, hmax;
   std::optional<int> table_size, iterations, width, height;
   std::optional<bool> skip_empty, float_math;
+  std::optional<std::uint64_t> jitter;  // riemann: the jitter's seed
   // The camera (issue 20): `fit` frames the volume's box (framing.hpp), then
   // VTK's motions in degrees and the zoom factor.
   std::optional<bool> fit;

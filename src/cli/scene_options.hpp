@@ -1,0 +1,29 @@
+#pragma once
+// The flags that change a scene before it is rendered, shared by the commands
+// that render one (`vri render`, `vri turntable`): the method and its
+// parameters, the image size, the camera motions, the background, threads.
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+#include "vri/scene/scene.hpp"
+#include "vri/scene/scene_overrides.hpp"
+
+namespace vri::cli {
+
+struct SceneFlags {
+  SceneOverrides overrides;
+  bool no_skip = false, double_math = false, fit = false;
+  std::string background;  // "none" (PNG with alpha) or "R,G,B"
+  int threads = 0;
+
+  // Registers every flag on `cmd`.
+  void add_to(CLI::App* cmd);
+  // The scene file with the flags applied; the background unless "none".
+  Scene load(const std::string& scene_file) const;
+};
+
+// --background R,G,B: three numbers in [0, 1]; vri::Error otherwise.
+Vec3 parse_background(const std::string& text);
+
+}  // namespace vri::cli
