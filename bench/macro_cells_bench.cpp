@@ -1,11 +1,15 @@
 // Empty-space skipping set-up times (docs/PERFORMANCE.md, "Transfer-function edits"),
 // one thread:
-//   BM_MacroCells/N          min/max macro cells of an N^3 volume (once per volume)
+//   BM_MacroCells/N          min/max macro cells of an N^3 volume (once per volume:
+//                            compute_macro_ranges)
 //   BM_Reclassify/N          after a transfer-function edit: ZeroOpacity of the
 //                            discretised function (256 scalars) and EmptySpace over
 //                            the (N/8)^3 macro cells
 //   BM_TfEdit/N              the same plus the first-order table (n = 256,
 //                            incremental builder): all a preint1 render redoes
+//   BM_Preint1Setup/N        a preint1 integrator made for a new transfer
+//                            function on a volume already rendered (the viewer's
+//                            edit: make_integrator, one thread)
 // The volume is the Marschner-Lobb field resampled to N^3 (values in [0, 1]),
 // through presets/bonsai.json rescaled to [0, 1].
 #include <benchmark/benchmark.h>
@@ -14,6 +18,7 @@
 #include <map>
 #include <memory>
 
+#include "vri/integrators/make_integrator.hpp"
 #include "vri/scene/scene.hpp"
 #include "vri/tables/table_builder.hpp"
 #include "vri/tables/zero_opacity.hpp"
@@ -44,8 +49,8 @@ const vri::TransferFunction& bench_tf() {
 void BM_MacroCells(benchmark::State& state) {
   const vri::GridVolume& volume = bench_volume(static_cast<int>(state.range(0)));
   for (auto _ : state) {
-    const vri::MacroCells cells(volume);
-    benchmark::DoNotOptimize(cells.min(0));
+    const vri::MacroRanges ranges = vri::compute_macro_ranges(volume);
+    benchmark::DoNotOptimize(ranges.lo.data());
   }
 }
 
@@ -75,9 +80,22 @@ void BM_TfEdit(benchmark::State& state) {
   }
 }
 
+void BM_Preint1Setup(benchmark::State& state) {
+  const vri::GridVolume& volume = bench_volume(static_cast<int>(state.range(0)));
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  vri::MethodSpec spec;
+  spec.name = "preint1";
+  (void)vri::make_integrator(spec, volume, bench_tf(), {});  // the volume has been rendered once
+  for (auto _ : state) {
+    const auto integrator = vri::make_integrator(spec, volume, bench_tf(), {});
+    benchmark::DoNotOptimize(integrator.get());
+  }
+}
+
 BENCHMARK(BM_MacroCells)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Reclassify)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TfEdit)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Preint1Setup)->Arg(256)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -5,7 +5,8 @@
 # out-of-memory; the failing input is left in BUILD_DIR/fuzz-artifacts/ (keep
 # it under tests/data/fuzz/HARNESS/ once fixed). The long campaign of
 # docs/RELIABILITY.md is this script with SECONDS=600 or more (FUZZ_PARALLEL=1
-# runs the harnesses at once).
+# runs the harnesses at once; otherwise FUZZ_JOBS, default one per core, run
+# side by side, each for SECONDS).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-10}
@@ -37,12 +38,14 @@ fuzz_one() {
   if [ $rc -ne 0 ]; then echo "fuzz_$h FAILED: see $log"; grep -A30 -E "ERROR|deadly|Timeout|out-of-memory" "$log" | head -40; fi
   return $rc
 }
-status=0
-if [ "${FUZZ_PARALLEL:-0}" = 1 ]; then  # every harness at once (the long campaign)
-  pids=()
-  for h in raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu vti vtk_structured_points metaimage npy_volume tiff scene transfer_function; do fuzz_one "$h" & pids+=($!); done
-  for p in "${pids[@]}"; do wait "$p" || status=1; done
-else
-  for h in raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu vti vtk_structured_points metaimage npy_volume tiff scene transfer_function; do fuzz_one "$h" || status=1; done
-fi
+harnesses=(raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu vti vtk_structured_points metaimage npy_volume tiff scene
+           transfer_function)
+jobs=${FUZZ_JOBS:-$(nproc)}
+[ "${FUZZ_PARALLEL:-0}" = 1 ] && jobs=${#harnesses[@]}  # every harness at once (the long campaign)
+status=0 running=0
+for h in "${harnesses[@]}"; do
+  fuzz_one "$h" &
+  if (( ++running >= jobs )); then wait -n || status=1; running=$((running - 1)); fi
+done
+while (( running > 0 )); do wait -n || status=1; running=$((running - 1)); done
 exit $status

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <mutex>
 #include <string>
 
 #include "vri/core/error.hpp"
 #include "vri/core/memory_limit.hpp"
+#include "vri/volume/macro_cells.hpp"
 
 namespace vri {
 
@@ -40,6 +42,17 @@ std::pair<GridVolume::SampleView, std::shared_ptr<const void>> shared_samples(Gr
 
 }  // namespace
 
+struct GridVolume::Cache {
+  std::once_flag once;
+  std::unique_ptr<const MacroRanges> macro_ranges;
+};
+
+const MacroRanges& GridVolume::macro_ranges() const {
+  std::call_once(cache_->once,
+                 [&] { cache_->macro_ranges = std::make_unique<const MacroRanges>(compute_macro_ranges(*this)); });
+  return *cache_->macro_ranges;
+}
+
 GridVolume::GridVolume(std::array<int, 3> dims, Samples values, Vec3 spacing, Vec3 origin)
     : GridVolume(dims, shared_samples(std::move(values)), spacing, origin) {}
 
@@ -49,7 +62,7 @@ GridVolume::GridVolume(std::array<int, 3> dims, SampleView values, std::shared_p
 
 GridVolume::GridVolume(std::array<int, 3> dims, std::pair<SampleView, std::shared_ptr<const void>> shared,
                        Vec3 spacing, Vec3 origin)
-    : dims_(dims), values_(shared.first), owner_(std::move(shared.second)) {
+    : dims_(dims), values_(shared.first), owner_(std::move(shared.second)), cache_(std::make_shared<Cache>()) {
   const std::uint64_t n = checked_sample_count({dims[0], dims[1], dims[2]});
   if (size() != n)
     throw Error("volume has " + std::to_string(size()) + " samples, dims need " + std::to_string(n));

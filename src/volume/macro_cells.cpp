@@ -43,30 +43,31 @@ void reduce_plane(const T* plane, std::array<int, 3> dims, std::array<int, 3> m,
 
 }  // namespace
 
-MacroCells::MacroCells(const GridVolume& volume)
-    : volume_(volume),
-      dims_{macro_count(volume.dims()[0]), macro_count(volume.dims()[1]), macro_count(volume.dims()[2])} {
+MacroRanges compute_macro_ranges(const GridVolume& volume) {
+  MacroRanges r{{macro_count(volume.dims()[0]), macro_count(volume.dims()[1]), macro_count(volume.dims()[2])}, {}, {}};
+  const std::array<int, 3>& m = r.dims;
   // One z-plane at a time (the scratch is a few rows, not a copy of the
   // volume): reduce it in x and y, then fold it into the one or two layers of
   // macro cells whose z window holds it.
-  const std::size_t layer = static_cast<std::size_t>(dims_[0]) * dims_[1];
-  lo_.assign(layer * dims_[2], std::numeric_limits<float>::infinity());
-  hi_.assign(lo_.size(), -std::numeric_limits<float>::infinity());
+  const std::size_t layer = static_cast<std::size_t>(m[0]) * m[1];
+  r.lo.assign(layer * m[2], std::numeric_limits<float>::infinity());
+  r.hi.assign(r.lo.size(), -std::numeric_limits<float>::infinity());
   volume.visit([&](auto values) {
     using T = typename decltype(values)::value_type;
     const auto& n = volume.dims();
     const std::size_t plane = static_cast<std::size_t>(n[0]) * n[1];
-    std::vector<T> row_lo(static_cast<std::size_t>(dims_[0]) * n[1]), row_hi(row_lo.size()), lo(layer), hi(layer);
+    std::vector<T> row_lo(static_cast<std::size_t>(m[0]) * n[1]), row_hi(row_lo.size()), lo(layer), hi(layer);
     for (int z = 0; z < n[2]; ++z) {
-      reduce_plane(values.data() + plane * z, n, dims_, row_lo, row_hi, lo, hi);
-      for (int k = std::max(0, (z - 1) / kCells); k <= std::min(dims_[2] - 1, z / kCells); ++k) {
+      reduce_plane(values.data() + plane * z, n, m, row_lo, row_hi, lo, hi);
+      for (int k = std::max(0, (z - 1) / MacroCells::kCells); k <= std::min(m[2] - 1, z / MacroCells::kCells); ++k) {
         for (std::size_t c = 0; c < layer; ++c) {
-          lo_[layer * k + c] = std::min(lo_[layer * k + c], static_cast<float>(lo[c]));
-          hi_[layer * k + c] = std::max(hi_[layer * k + c], static_cast<float>(hi[c]));
+          r.lo[layer * k + c] = std::min(r.lo[layer * k + c], static_cast<float>(lo[c]));
+          r.hi[layer * k + c] = std::max(r.hi[layer * k + c], static_cast<float>(hi[c]));
         }
       }
     }
   });
+  return r;
 }
 
 }  // namespace vri

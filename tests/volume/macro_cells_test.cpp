@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <random>
+#include <vector>
+
+#include <tbb/parallel_for.h>
 
 #include "test_support.hpp"
 #include "vri/tables/second_order_table.hpp"
@@ -159,6 +162,25 @@ TEST(EmptySpace, RunsEndAtTheFacesOfNonEmptyCells) {
   const EmptySpace::Run d = space2.run(ray, 18, 40);
   EXPECT_FALSE(d.empty);
   EXPECT_DOUBLE_EQ(d.t_end, 40);  // leaves the macro grid at x = 32 (t = 33) still non-empty: t_max
+}
+
+// The ranges are computed once per volume and shared by its copies (a
+// transfer-function edit makes a new integrator, not new ranges); concurrent
+// first uses agree on one computation; another volume gets its own.
+TEST(MacroCells, RangesAreComputedOncePerVolumeAndSharedByCopies) {
+  const GridVolume volume = test::volume_from({40, 30, 20}, [](double x, double y, double z) { return x * y - z; });
+  std::vector<const MacroRanges*> seen(64);
+  tbb::parallel_for(0, 64, [&](int i) { seen[i] = &volume.macro_ranges(); });
+  for (const MacroRanges* p : seen) EXPECT_EQ(p, seen[0]);
+  GridVolume copy = volume;
+  copy.set_spacing({2, 2, 2});  // ranges are in sample space: still the same
+  EXPECT_EQ(&copy.macro_ranges(), seen[0]);
+  const MacroRanges fresh = compute_macro_ranges(volume);
+  EXPECT_EQ(fresh.lo, volume.macro_ranges().lo);
+  EXPECT_EQ(fresh.hi, volume.macro_ranges().hi);
+  const GridVolume other = test::volume_from({40, 30, 20}, [](double x, double y, double z) { return x * y - z; });
+  EXPECT_NE(&other.macro_ranges(), seen[0]);
+  EXPECT_EQ(MacroCells(other).min(5), MacroCells(volume).min(5));
 }
 
 }  // namespace

@@ -23,6 +23,8 @@
 
 namespace vri {
 
+struct MacroRanges;  // vri/volume/macro_cells.hpp
+
 class GridVolume {
  public:
   // Largest accepted volume: 2^30 samples (4 GiB as float). Bigger requests are
@@ -87,6 +89,12 @@ class GridVolume {
   float min_value() const { return min_; }
   float max_value() const { return max_; }
 
+  // The min and max over each macro cell (macro_cells.hpp), computed on first
+  // use and shared by every copy of this volume: the samples never change, so
+  // every integrator made for it - one per transfer-function edit in the
+  // viewer - reuses them. Thread-safe.
+  const MacroRanges& macro_ranges() const;
+
   Vec3 box_lo() const { return origin_; }
   Vec3 box_hi() const;
   // min(sx, sy, sz): the unit of step sizes (SPEC §1).
@@ -109,6 +117,8 @@ class GridVolume {
   std::shared_ptr<const void> owner_;
   Vec3 spacing_, origin_;
   float min_ = 0, max_ = 0;
+  struct Cache;  // what is derived from the samples once (grid_volume.cpp)
+  std::shared_ptr<Cache> cache_;
 };
 
 // The 8 corners of the cell whose first corner is `t` (strides 1, sy, sz), in
