@@ -343,14 +343,20 @@ def vtk_tables(p):
     out = {"x": rounded(xs), "rgb": [rounded(f.GetColor(x)) for x in xs]}
     if "Points" in p:
         pts = np.array(p["Points"], float).reshape(-1, 4)
-        o = vtk.vtkPiecewiseFunction()
-        o.AllowDuplicateScalarsOn()
-        for x, a, mid, sharp in pts:
-            o.AddPoint(x, a, mid, sharp)
+        o = vtk_opacity(pts)
         ox = np.linspace(pts[0, 0], pts[-1, 0], SAMPLES)
         out["opacity_x"] = rounded(ox)
         out["alpha"] = rounded([o.GetValue(x) for x in ox])
     return out, f
+
+
+def vtk_opacity(pts):
+    """VTK's piecewise function of ParaView's opacity Points (x, alpha, midpoint, sharpness)."""
+    o = vtk.vtkPiecewiseFunction()
+    o.AllowDuplicateScalarsOn()
+    for x, a, mid, sharp in pts:
+        o.AddPoint(x, a, mid, sharp)
+    return o
 
 
 def check_own_implementation(p, f):
@@ -367,10 +373,7 @@ def check_own_implementation(p, f):
             worst = max(worst, np.abs(mine - np.array(f.GetColor(x1 + s * (x2 - x1)))).max())
     if "Points" in p:
         pts = np.array(p["Points"], float).reshape(-1, 4)
-        o = vtk.vtkPiecewiseFunction()
-        o.AllowDuplicateScalarsOn()
-        for x, a, mid, sharp in pts:
-            o.AddPoint(x, a, mid, sharp)
+        o = vtk_opacity(pts)
         for k in range(len(pts) - 1):
             x1, x2 = pts[k, 0], pts[k + 1, 0]
             for s in np.linspace(0.013, 0.987, 30):  # not 0.5: a sharp step sits there
