@@ -103,7 +103,8 @@ Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, 
     for (; k < stop; ++k) {
       const double h_k = std::min(h, iv->t1 - (iv->t0 + k * h));
       if (T < termination || !(h_k > 0)) return {C[0], C[1], C[2], 1 - T};
-      const Vec3 at = u0 + (static_cast<double>(k) + u * h_k / h) * du;
+      // u of the way into the step; only the partial last step is shorter than h.
+      const Vec3 at = u0 + (static_cast<double>(k) + (h_k < h ? u * h_k / h : u)) * du;
       if (!shading) {
         riemann_step(tf(sampler.at(values, at)), static_cast<float>(h_k), C, T);
         continue;
