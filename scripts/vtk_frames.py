@@ -1,9 +1,19 @@
 """Timed off-screen frames of one VTK volume mapper, shared by the side-by-side
 scripts (vtk_side_by_side.py for meshes, vtk_grid_side_by_side.py for grids)."""
+import json
+import subprocess
 import time
 import numpy as np
 import vtk
 from vtk.util import numpy_support as ns
+
+
+def scene_camera(vri, scene_path, size):
+    """The camera vri renders `scene_path` through at size x size (SPEC §6 keys),
+    after its "fit" and motions: `vri camera`."""
+    out = subprocess.run([vri, "camera", scene_path, "--width", str(size), "--height", str(size)],
+                         check=True, capture_output=True, text=True).stdout
+    return json.loads(out)
 
 
 def render_frames(mapper, prop, cam, size, frames):

@@ -38,7 +38,7 @@ import argparse, gzip, json, os, re, subprocess
 import numpy as np
 import vtk
 from vtk.util import numpy_support as ns
-from vtk_frames import render_frames
+from vtk_frames import render_frames, scene_camera
 
 ap = argparse.ArgumentParser()
 ap.add_argument("scene"); ap.add_argument("size", type=int); ap.add_argument("out")
@@ -138,7 +138,7 @@ if not os.path.exists(exact_path):
 exact = np.load(exact_path)[..., :3]
 
 # ---- VTK ----
-cam = scene["camera"]
+cam = scene_camera(vri, args.scene, size)
 
 
 def vtk_render(mapper, frames=args.repeat):

@@ -18,7 +18,7 @@ their error is the model, not only the numerics.
 import json, os, subprocess, sys, time
 import numpy as np
 import vtk
-from vtk_frames import render_frames
+from vtk_frames import render_frames, scene_camera
 
 scene_path, size, out = sys.argv[1], int(sys.argv[2]), sys.argv[3]
 os.makedirs(out, exist_ok=True)
@@ -57,7 +57,7 @@ prop.SetScalarOpacityUnitDistance(1.0)
 prop.SetInterpolationTypeToLinear()
 prop.ShadeOff()
 
-cam = scene["camera"]
+cam = scene_camera(vri, scene_path, size)
 def vtk_render(make_mapper, frames=2):
     mapper = make_mapper()
     mapper.SetInputData(grid)

@@ -85,7 +85,9 @@ inline std::string source_path(const std::string& rel) { return std::string(VRI_
 inline std::vector<std::string> bundled_scenes() {
   std::vector<std::string> names;
   for (const auto& e : std::filesystem::directory_iterator(source_path("scenes")))
-    if (e.path().extension() == ".json") names.push_back(e.path().filename().string());
+    // (Not hidden files: scripts/float_paths_ab.sh writes scenes/.ab_*.json while it runs.)
+    if (e.path().extension() == ".json" && e.path().filename().string()[0] != '.')
+      names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
 }

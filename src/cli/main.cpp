@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   vri::cli::Runner view = vri::cli::add_view_command(app);
   vri::cli::Runner info = vri::cli::add_info_command(app);
   vri::cli::Runner turntable = vri::cli::add_turntable_command(app);
+  vri::cli::Runner camera = vri::cli::add_camera_command(app);
   // Global, accepted after the subcommand too (fallthrough).
   std::string max_memory;
   app.add_option("--max-memory", max_memory,
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
                                   : app.got_subcommand("view")    ? view
                                   : app.got_subcommand("info")    ? info
                                   : app.got_subcommand("turntable") ? turntable
+                                  : app.got_subcommand("camera")    ? camera
                                                                   : ray;
     const int code = run();
     if (code == 0) outputs.commit();

@@ -6,7 +6,7 @@
 #include <optional>
 #include <sstream>
 
-#include "scene_json.hpp"
+#include "scene/scene_json.hpp"
 #include "vri/camera/framing.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"

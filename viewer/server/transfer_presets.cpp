@@ -5,7 +5,7 @@
 #include <string>
 
 #include "embedded_files.hpp"
-#include "scene_json.hpp"
+#include "scene/scene_json.hpp"
 #include "vri/transfer/colormap.hpp"
 
 namespace vri::viewer {

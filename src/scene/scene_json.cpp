@@ -1,6 +1,6 @@
-#include "scene_json.hpp"
+#include "scene/scene_json.hpp"
 
-namespace vri::viewer {
+namespace vri {
 
 using nlohmann::json;
 
@@ -27,4 +27,4 @@ json transfer_function_json(const TransferFunction& tf) {
   return {{"points", points}};
 }
 
-}  // namespace vri::viewer
+}  // namespace vri
