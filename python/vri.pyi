@@ -74,8 +74,13 @@ def render(scene: SceneLike, *, method: Optional[str] = None, step: Optional[flo
            threads: int = 0, termination: Optional[float] = None, skip_empty: Optional[bool] = None,
            double: Optional[bool] = None, h0: Optional[float] = None, hmin: Optional[float] = None,
            hmax: Optional[float] = None, strategy: Optional[str] = None, max_samples: Optional[float] = None,
-           max_work: Optional[float] = None) -> npt.NDArray[np.float32]:
+           max_work: Optional[float] = None, jitter: Optional[int] = None, fit: Optional[bool] = None,
+           azimuth: Optional[float] = None, elevation: Optional[float] = None, roll: Optional[float] = None,
+           zoom: Optional[float] = None, backend: Optional[str] = None) -> npt.NDArray[np.float32]:
     """float32 (H, W, 4), premultiplied RGBA: the same bytes as `vri render -o OUT.npy`."""
+
+def devices() -> List[str]:
+    """The Vulkan devices backend='vulkan' can use (`vri devices`)."""
 
 def error_estimate(scene: SceneLike, *, method: Optional[str] = None, tolerance: Optional[float] = None,
                    width: Optional[int] = None, height: Optional[int] = None, threads: int = 0,

@@ -12,7 +12,10 @@ pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1
       # the viewer (viewer/): Boost.Beast, JPEG frames, and its browser test's Chromium
       libboost-dev libturbojpeg0-dev chromium
       libopenexr-dev  # .exr output
-      libavformat-dev libavcodec-dev libswscale-dev)  # vri turntable's .mp4
+      libavformat-dev libavcodec-dev libswscale-dev  # vri turntable's .mp4
+      # the Vulkan backend (vulkan/): headers and the shader compiler to build;
+      # the loader, Mesa's CPU device (lavapipe) and the validation layer to test
+      libvulkan-dev glslc libvulkan1 mesa-vulkan-drivers vulkan-validationlayers)
 # The browser test's driver (puppeteer-core) comes from npm: node and npm from
 # Debian unless the image has a node of its own.
 command -v node >/dev/null || pkgs+=(nodejs)

@@ -25,7 +25,7 @@ bash scripts/build.sh build "${launcher[@]}" -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BE
 # them, is tested in the other two builds. (The Python module stays: turning
 # it off changes every file's flags, -fPIC, and so loses the ccache hits.)
 bash scripts/build.sh build-nosimd "${launcher[@]}" -DVRI_SIMD=OFF -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=OFF \
-  -DVRI_VIEWER=OFF
+  -DVRI_VIEWER=OFF -DVRI_VULKAN=OFF
 (cd build-nosimd && ctest --output-on-failure -j "$jobs")
 # -g1: line tables (stack traces keep file:line) at less compile time than -g.
 bash scripts/build.sh build-asan "${launcher[@]}" -DVRI_SANITIZE=ON -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=OFF \

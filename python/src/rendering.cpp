@@ -34,6 +34,7 @@ std::optional<T> keyword(const char* function, const std::string& key, const py:
 struct RenderRequest {
   SceneOverrides overrides;
   int threads = 0;
+  Backend backend = Backend::Cpu;
 };
 
 RenderRequest request_of(const char* function, const py::kwargs& kwargs) {
@@ -59,6 +60,12 @@ RenderRequest request_of(const char* function, const py::kwargs& kwargs) {
     else if (key == "hmin") o.hmin = number();
     else if (key == "hmax") o.hmax = number();
     else if (key == "strategy") o.strategy = text();
+    else if (key == "fit") o.fit = keyword<bool>(function, key, v);
+    else if (key == "azimuth") o.azimuth = number();
+    else if (key == "elevation") o.elevation = number();
+    else if (key == "roll") o.roll = number();
+    else if (key == "zoom") o.zoom = number();
+    else if (key == "backend") r.backend = parse_backend(*text());
     else if (key == "max_samples") o.max_samples = number();
     else if (key == "max_work") o.max_work = number();
     else if (key == "jitter") {
@@ -91,7 +98,7 @@ py::array_t<float> render(const py::object& scene_object, const py::kwargs& kwar
   std::optional<std::string> transparent;
   {
     py::gil_scoped_release release;
-    const SceneRenderer renderer(scene);
+    const SceneRenderer renderer(scene, request.backend);
     image = renderer.render({.threads = request.threads});
     transparent = transparency_cause(image, scene, renderer.camera());
   }
@@ -105,7 +112,7 @@ py::array_t<float> error_estimate(const py::object& scene_object, const py::kwar
   Image estimate;
   {
     py::gil_scoped_release release;
-    estimate = SceneRenderer(scene).render_error_estimate({.threads = request.threads});
+    estimate = SceneRenderer(scene, request.backend).render_error_estimate({.threads = request.threads});
   }
   return to_numpy(std::move(estimate));
 }
@@ -148,7 +155,9 @@ const char* kKeywords =
     "Keyword arguments override the scene as the `vri render` flags do (None keeps the scene's):\n"
     "method, step, tolerance, table_size, iterations, width, height, threads (0: all cores),\n"
     "termination, skip_empty (False: --no-skip), double (True: --double), h0, hmin, hmax,\n"
-    "strategy, max_samples, max_work, jitter (riemann: a seed). Raises ValueError with the CLI's message for bad values.";
+    "strategy, max_samples, max_work, jitter (riemann: a seed), fit (frame the volume), azimuth,\n"
+    "elevation, roll (degrees), zoom, backend ('cpu' or 'vulkan': vri.devices() lists the GPUs).\n"
+    "Raises ValueError with the CLI's message for bad values.";
 
 }  // namespace
 
@@ -160,6 +169,9 @@ py::array_t<float> to_numpy(Image image) {
 }
 
 void bind_rendering(py::module_& m) {
+  m.def("devices", &list_vulkan_devices,
+        "The Vulkan devices backend='vulkan' can use, one str each (`vri devices`): index, name, type,\n"
+        "Vulkan version. [] when there are none; ValueError when vri or the machine lacks Vulkan.");
   m.def("render", &render, py::arg("scene"),
         (std::string("Renders a scene (a vri.Scene, a dict of SPEC §8 keys or a scene file path) and\n"
                      "returns float32 (H, W, 4): premultiplied RGBA before the background, row 0 at the\n"

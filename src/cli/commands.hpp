@@ -17,5 +17,6 @@ Runner add_view_command(CLI::App& app);
 Runner add_info_command(CLI::App& app);
 Runner add_turntable_command(CLI::App& app);
 Runner add_camera_command(CLI::App& app);
+Runner add_devices_command(CLI::App& app);
 
 }  // namespace vri::cli

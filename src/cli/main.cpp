@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   vri::cli::Runner info = vri::cli::add_info_command(app);
   vri::cli::Runner turntable = vri::cli::add_turntable_command(app);
   vri::cli::Runner camera = vri::cli::add_camera_command(app);
+  vri::cli::Runner devices = vri::cli::add_devices_command(app);
   // Global, accepted after the subcommand too (fallthrough).
   std::string max_memory;
   app.add_option("--max-memory", max_memory,
@@ -65,6 +66,7 @@ int main(int argc, char** argv) {
                                   : app.got_subcommand("info")    ? info
                                   : app.got_subcommand("turntable") ? turntable
                                   : app.got_subcommand("camera")    ? camera
+                                  : app.got_subcommand("devices")   ? devices
                                                                   : ray;
     const int code = run();
     if (code == 0) outputs.commit();

@@ -75,7 +75,7 @@ int run_render(const RenderArgs& args) {
   if (args.trace.has_value() != !args.trace_pixel.empty()) throw Error("--trace and --trace-pixel go together");
 
   // Every check comes before the first file is written.
-  const SceneRenderer renderer(scene);
+  const SceneRenderer renderer(scene, args.flags.parsed_backend());
   const Camera& camera = renderer.camera();
   const ErrorEstimatingIntegrator* estimating =
       args.error_estimate || args.trace ? &renderer.error_estimating(args.error_estimate ? "--error-estimate" : "--trace")
@@ -105,7 +105,8 @@ int run_render(const RenderArgs& args) {
   if (const auto cause = transparency_cause(image, scene, camera))
     std::cerr << "vri: warning: every pixel is transparent: " << *cause << "\n";
   std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '" << renderer.method_name()
-            << "' in " << seconds << " s (CPU " << cpu_seconds << " s) -> " << args.output << "\n";
+            << "' in " << seconds << " s (CPU " << cpu_seconds << " s) -> " << args.output
+            << (renderer.backend() == Backend::Vulkan ? " (on " + renderer.device_name() + ")" : "") << "\n";
   if (const double eps = scene.method.fast.termination; eps > 0) {
     const TerminationBound bound = termination_bound(image, eps);
     std::cerr << "vri: early termination below transmittance " << eps << ": " << bound.pixels

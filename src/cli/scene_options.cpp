@@ -42,6 +42,7 @@ void SceneFlags::add_to(CLI::App* cmd) {
   cmd->add_option("--roll", o.roll, "Turn the up vector about the view direction (degrees)");
   cmd->add_option("--zoom", o.zoom, "Magnify by this factor (VTK's Zoom: narrows the field of view)");
   cmd->add_option("--threads", threads, "Worker threads (0: all cores; at most 1024)");
+  cmd->add_option("--backend", backend, "cpu (default) or vulkan: render on a Vulkan device (`vri devices`)");
   cmd->add_option("--max-samples", o.max_samples, "Cap on samples per ray (default 1e7; scene method.max_samples)");
   cmd->add_option("--max-work", o.max_work, "Cap on samples per ray x pixels (default 2e10; scene method.max_work)");
   cmd->add_option("--h0", o.h0, "adaptive: initial step (voxel units)");

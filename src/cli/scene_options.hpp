@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "vri/render/backend.hpp"
 #include "vri/scene/scene.hpp"
 #include "vri/scene/scene_overrides.hpp"
 
@@ -15,12 +16,15 @@ struct SceneFlags {
   SceneOverrides overrides;
   bool no_skip = false, double_math = false, fit = false;
   std::string background;  // "none" (PNG with alpha) or "R,G,B"
+  std::string backend = "cpu";  // --backend cpu|vulkan (SPEC §11)
   int threads = 0;
 
   // Registers every flag on `cmd`.
   void add_to(CLI::App* cmd);
   // The scene file with the flags applied; the background unless "none".
   Scene load(const std::string& scene_file) const;
+  // --backend as a Backend; vri::Error for another name.
+  Backend parsed_backend() const { return parse_backend(backend); }
 };
 
 // --background R,G,B: three numbers in [0, 1]; vri::Error otherwise.

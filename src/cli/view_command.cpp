@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "vri/core/error.hpp"
+#include "vri/render/backend.hpp"
 #if VRI_VIEWER
 #include "viewer_server.hpp"
 #endif
@@ -28,6 +29,7 @@ struct ViewArgs {
   int port = 8765;
   bool open = false;
   int threads = 0;
+  std::string backend = "cpu";
   bool host_given = false;
 };
 
@@ -53,6 +55,7 @@ int run_view(const ViewArgs& args) {
   const char* scenes = std::getenv("VRI_SCENES");  // where the bundled scenes are, if not in the source tree
   options.bundled_dir = fs::path(scenes ? scenes : VRI_BUNDLED_SCENES);
   options.threads = args.threads;
+  options.backend = parse_backend(args.backend);
   viewer::ViewerServer server(options);
   std::cout << server.url() << std::endl;
   if (!server.loopback())
@@ -78,6 +81,7 @@ Runner add_view_command(CLI::App& app) {
   cmd->add_option("--port", args->port, "Port (default 8765; 0: a free one)");
   cmd->add_flag("--open", args->open, "Open the address in the desktop's browser");
   cmd->add_option("--threads", args->threads, "Render threads per client (0: all cores)");
+  cmd->add_option("--backend", args->backend, "cpu (default) or vulkan: render the frames on a Vulkan device");
   return [args] { return run_view(*args); };
 }
 

@@ -97,39 +97,54 @@ Float4 slab_colour(const Lookup& table, const typename Lookup::Spot& spot, const
                         table.blend(spot, lighting.weighted[2]));
 }
 
+// The partial last slab of a float march, from the front sample s_front (the
+// first sample of slab `full`) to the exit iv.t1, integrated exactly as on
+// the double path: Steps linear sub-slabs of equal length, lit as on the
+// double path: by the mean of the gradients at their ends (`sampled`) or
+// with their exactly weighted integrals (`interpolated`, exact_weighted_slab,
+// first order for both orders). Each sub-slab's premultiplied (r, g, b,
+// alpha), front to back; all zero when the ray ends on a whole slab. The GPU
+// backend composites the same values (vulkan/host/ray_setup.cpp).
+template <int Steps, class Value>
+std::array<Float4, Steps> last_slabs(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf,
+                                     const FloatLighting& lighting, const Ray& ray, const Interval& iv,
+                                     long long full, double h, FloatSample front) {
+  std::array<Float4, Steps> out{};
+  const double t_rest = iv.t0 + full * Steps * h;
+  const double sub = (iv.t1 - t_rest) / Steps;
+  if (!(sub > 0)) return out;
+  const FloatShading::Vector d = direction(ray);
+  for (int i = 1; i <= Steps; ++i) {
+    const FloatSample back =
+        sample_at(sampler, values, lighting, d, sampler.grid(ray.at(i == Steps ? iv.t1 : t_rest + i * sub)));
+    const auto float4 = [](const SlabRgba& e) {
+      return Float4{static_cast<float>(e.r), static_cast<float>(e.g), static_cast<float>(e.b),
+                    static_cast<float>(e.a)};
+    };
+    Float4& v = out[i - 1];
+    if (lighting.interpolated()) {
+      const SlabWeights w = exact_weighted_slab(tf, front.s, back.s, sub);
+      v = lit_weighted(front.t, back.t, float4(w.front), float4(w.back));
+    } else {
+      v = float4(exact_slab(tf, front.s, back.s, sub));
+      if (lighting.shading) v = lit_by(lighting.shading->terms(mean(std::array{front.g, back.g}), d), v);
+    }
+    front = back;
+  }
+  return out;
+}
+
 // The end of a float march: the pixel (C, 1 - T) once T < termination, else
-// with the partial last slab from the front sample s_front (the first sample
-// of slab `full`) to the exit iv.t1 integrated exactly, as on the double path:
-// Steps linear sub-slabs of equal length, lit as on the double path: by the
-// mean of the gradients at their ends (`sampled`) or with their exactly
-// weighted integrals (`interpolated`, exact_weighted_slab, first order for
-// both orders). `values`: the volume's typed samples (GridVolume::visit).
+// with the partial last slab (last_slabs) composited. `values`: the volume's
+// typed samples (GridVolume::visit).
 template <int Steps, class Value>
 Rgba finish_float(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf,
                   const FloatLighting& lighting, const Ray& ray, const Interval& iv, long long full, double h,
                   FloatSample front, float termination, Float4 C, float T) {
-  const double t_rest = iv.t0 + full * Steps * h;
-  const double sub = (iv.t1 - t_rest) / Steps;
-  const FloatShading::Vector d = direction(ray);
-  if (!(T < termination) && sub > 0)
-    for (int i = 1; i <= Steps; ++i) {
-      const FloatSample back =
-          sample_at(sampler, values, lighting, d, sampler.grid(ray.at(i == Steps ? iv.t1 : t_rest + i * sub)));
-      const auto float4 = [](const SlabRgba& e) {
-        return Float4{static_cast<float>(e.r), static_cast<float>(e.g), static_cast<float>(e.b),
-                      static_cast<float>(e.a)};
-      };
-      Float4 v;
-      if (lighting.interpolated()) {
-        const SlabWeights w = exact_weighted_slab(tf, front.s, back.s, sub);
-        v = lit_weighted(front.t, back.t, float4(w.front), float4(w.back));
-      } else {
-        v = float4(exact_slab(tf, front.s, back.s, sub));
-        if (lighting.shading) v = lit_by(lighting.shading->terms(mean(std::array{front.g, back.g}), d), v);
-      }
+  if (!(T < termination))
+    for (const Float4& v : last_slabs<Steps>(sampler, values, tf, lighting, ray, iv, full, h, front)) {
       C += T * Float4{v[0], v[1], v[2], 0};
       T *= 1 - v[3];
-      front = back;
     }
   return {C[0], C[1], C[2], 1 - T};
 }

@@ -27,9 +27,13 @@ const Scene& checked(const Scene& scene) {
 
 }  // namespace
 
-SceneRenderer::SceneRenderer(const Scene& scene) : scene_(checked(scene)), camera_(scene.camera) {
+SceneRenderer::SceneRenderer(const Scene& scene, Backend backend) : scene_(checked(scene)), camera_(scene.camera) {
   check_work(scene, camera_);  // before any table is built
   const MethodSpec& m = scene.method;
+  if (backend == Backend::Vulkan) {
+    gpu_ = make_vulkan_scene_renderer(scene);
+    return;
+  }
   if (m.name != "pt" && m.name != "pt-cylindrical") {
     integrator_ = std::visit(
         [&](const auto& volume) { return make_integrator(m, volume, scene.transfer_function, scene.lighting); },
@@ -58,13 +62,16 @@ std::string SceneRenderer::method_name() const {
   return integrator_ ? std::string(integrator_->name()) : scene_.method.name;
 }
 
+std::string SceneRenderer::device_name() const { return gpu_ ? gpu_->device_name() : "cpu"; }
+
 Image SceneRenderer::render(const RenderOptions& options) const { return render(camera_, options); }
 
 Image SceneRenderer::render(const Camera& camera, const RenderOptions& options) const {
   if (&camera != &camera_) check_work(scene_, camera);
   const Projected* p = projected_.get();
   const Image image =
-      !p            ? vri::render(camera, *integrator_, options)
+      gpu_          ? gpu_->render(camera, options)
+      : !p          ? vri::render(camera, *integrator_, options)
       : p->cylinder ? render_projected(camera, scene_.mesh(), *p->cylinder, options, scene_.lighting,
                                        p->weighted_cylinder ? &*p->weighted_cylinder : nullptr)
                     : render_projected(camera, scene_.mesh(), *p->table, options, scene_.lighting, p->weighted.get());
@@ -73,6 +80,7 @@ Image SceneRenderer::render(const Camera& camera, const RenderOptions& options) 
 }
 
 const ErrorEstimatingIntegrator& SceneRenderer::error_estimating(const std::string& what) const {
+  if (gpu_) throw Error(what + " is not on the GPU yet: use --backend cpu");
   const auto* e = dynamic_cast<const ErrorEstimatingIntegrator*>(integrator_.get());
   if (!e) throw Error(what + " needs method 'adaptive', not '" + scene_.method.name + "'");
   return *e;

@@ -44,7 +44,7 @@ void ClientSession::on_accept(beast::error_code ec) {
         });
       }};
   worker_ = std::make_unique<RenderWorker>(state_.catalog, state_.catalog.first_id(), std::move(output),
-                                           state_.threads);
+                                           state_.threads, state_.backend);
   read();
 }
 

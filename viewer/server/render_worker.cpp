@@ -30,8 +30,9 @@ json methods_for(const Dataset& d) {
 
 }  // namespace
 
-RenderWorker::RenderWorker(DatasetCatalog& catalog, std::string first, WorkerOutput output, int threads)
-    : catalog_(catalog), output_(std::move(output)), threads_(threads) {
+RenderWorker::RenderWorker(DatasetCatalog& catalog, std::string first, WorkerOutput output, int threads,
+                           Backend backend)
+    : catalog_(catalog), output_(std::move(output)), threads_(threads), backend_(backend) {
   pending_ = OpenRequest{std::move(first)};
   thread_ = std::thread([this] { run(); });
 }
@@ -112,7 +113,7 @@ RenderWorker::Prepared& RenderWorker::prepare(Prepared& slot, const json& scene)
   const auto start = std::chrono::steady_clock::now();
   slot = {};
   slot.scene = std::make_unique<Scene>(parse_scene(scene.dump(), dataset_->volume, dataset_->base_dir, "render.scene"));
-  slot.renderer = std::make_unique<SceneRenderer>(*slot.scene);
+  slot.renderer = std::make_unique<SceneRenderer>(*slot.scene, backend_);
   slot.key = std::move(key);
   slot.setup_ms = ms_since(start);
   return slot;

@@ -18,6 +18,8 @@
 #include <thread>
 #include <vector>
 
+#include "vri/render/backend.hpp"
+
 #include "dataset.hpp"
 #include "protocol.hpp"
 #include "vri/render/image.hpp"
@@ -34,7 +36,8 @@ struct WorkerOutput {
 class RenderWorker {
  public:
   // Sends the welcome of `first` once started. `threads`: render threads (0: every core).
-  RenderWorker(DatasetCatalog& catalog, std::string first, WorkerOutput output, int threads = 0);
+  RenderWorker(DatasetCatalog& catalog, std::string first, WorkerOutput output, int threads = 0,
+               Backend backend = Backend::Cpu);
   ~RenderWorker();  // cancels the work in flight and joins
   RenderWorker(const RenderWorker&) = delete;
   RenderWorker& operator=(const RenderWorker&) = delete;
@@ -71,6 +74,7 @@ class RenderWorker {
   DatasetCatalog& catalog_;
   WorkerOutput output_;
   int threads_;
+  Backend backend_;
 
   std::mutex mutex_;
   std::condition_variable wake_;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dataset.hpp"
+#include "vri/render/backend.hpp"
 
 namespace vri::viewer {
 
@@ -19,6 +20,7 @@ struct ServerState {
   unsigned short port = 0;
   DatasetCatalog catalog;
   int threads = 0;  // render threads per client (0: every core)
+  Backend backend = Backend::Cpu;
 
   std::mutex sessions_mutex;
   std::vector<std::weak_ptr<ClientSession>> sessions;

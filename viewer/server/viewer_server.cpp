@@ -26,7 +26,7 @@ struct ViewerServer::Impl {
   bool stopping = false;
 
   Impl(const ServerOptions& o)
-      : state{make_token(), o.host, 0, DatasetCatalog(o.file, o.bundled_dir), o.threads, {}, {}} {}
+      : state{make_token(), o.host, 0, DatasetCatalog(o.file, o.bundled_dir), o.threads, o.backend, {}, {}} {}
 
   void accept() {
     acceptor.async_accept([this](boost::system::error_code ec, tcp::socket socket) {

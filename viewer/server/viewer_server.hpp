@@ -6,6 +6,8 @@
 #include <memory>
 #include <string>
 
+#include "vri/render/backend.hpp"
+
 namespace vri::viewer {
 
 struct ServerOptions {
@@ -14,6 +16,7 @@ struct ServerOptions {
   std::filesystem::path file;           // the scene or volume given (may be empty)
   std::filesystem::path bundled_dir;    // bundled scenes, offered in the list (may be missing)
   int threads = 0;                      // render threads per client (0: every core)
+  Backend backend = Backend::Cpu;       // where frames are rendered (--backend)
   bool handle_signals = true;           // SIGINT and SIGTERM stop the server
 };
 

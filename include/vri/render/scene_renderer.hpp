@@ -3,13 +3,15 @@
 // work estimated against the caps, its integrator (or, for `pt` and
 // `pt-cylindrical`, its projected-tetrahedra tables) built - then rendered.
 // `vri render`, the Python module and library users all render through it,
-// so each gets the same checks and the same bytes for the same scene.
+// so each gets the same checks and the same bytes for the same scene. With
+// Backend::Vulkan the scene is made ready on a GPU instead (backend.hpp).
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "vri/camera/camera.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
+#include "vri/render/backend.hpp"
 #include "vri/render/image.hpp"
 #include "vri/render/renderer.hpp"
 #include "vri/scene/scene.hpp"
@@ -20,7 +22,7 @@ class SceneRenderer {
  public:
   // Throws vri::Error for bad parameters, work over the caps or a method the
   // volume does not support. Refers to `scene`: keep it alive and unchanged.
-  explicit SceneRenderer(const Scene& scene);
+  explicit SceneRenderer(const Scene& scene, Backend backend = Backend::Cpu);
   ~SceneRenderer();
   SceneRenderer(const SceneRenderer&) = delete;
   SceneRenderer& operator=(const SceneRenderer&) = delete;
@@ -28,6 +30,9 @@ class SceneRenderer {
   const Camera& camera() const { return camera_; }
   // The integrator's own name (with its variant), or the projected method's.
   std::string method_name() const;
+  Backend backend() const { return gpu_ ? Backend::Vulkan : Backend::Cpu; }
+  // "cpu", or the GPU's name ("vulkan: llvmpipe (LLVM 15.0.6, 256 bits)").
+  std::string device_name() const;
 
   // The image; vri::Error if it holds NaN or infinity (refuse_non_finite),
   // so no caller writes one.
@@ -48,6 +53,7 @@ class SceneRenderer {
   Camera camera_;
   std::unique_ptr<Integrator> integrator_;
   std::unique_ptr<Projected> projected_;
+  std::unique_ptr<GpuSceneRenderer> gpu_;
 };
 
 }  // namespace vri

@@ -47,6 +47,9 @@ class FloatTransferFunction {
   float scale() const { return scale_; }
   const int* first() const { return first_.data(); }
   const float* breakpoints() const { return breakpoints_.data(); }
+  // Segments, and breakpoints with the closing +inf: one per segment.
+  int segments() const { return static_cast<int>(s_ref_.size()); }
+  int breakpoint_count() const { return static_cast<int>(breakpoints_.size()); }
   // Per segment: s_ref, the values there and their slopes (channels r, g, b, tau).
   const float* s_ref() const { return s_ref_.data(); }
   const float* value(int channel) const { return value_[channel].data(); }

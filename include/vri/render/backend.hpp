@@ -1,0 +1,48 @@
+#pragma once
+// Backends (SPEC §11: `--backend cpu|vulkan`): where a scene is rendered. The
+// CPU backend is the library itself; the Vulkan backend (vulkan/: GLSL
+// compute shaders, the loader opened at run time) renders the same
+// integrals on any Vulkan device, Mesa's CPU implementation lavapipe
+// included, within 1e-4 per channel of the CPU float path (docs/GPU.md).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vri/camera/camera.hpp"
+#include "vri/render/image.hpp"
+#include "vri/render/renderer.hpp"
+
+namespace vri {
+
+struct Scene;
+
+enum class Backend { Cpu, Vulkan };
+
+// "cpu" or "vulkan"; vri::Error naming both otherwise.
+Backend parse_backend(const std::string& name);
+std::string backend_name(Backend backend);
+
+// Whether this build has the Vulkan backend (VRI_VULKAN, on when glslc and
+// the Vulkan headers were found).
+bool vulkan_backend_built();
+
+// One scene made ready on a GPU: its volume, transfer function and tables on
+// the device. SceneRenderer holds one for Backend::Vulkan.
+class GpuSceneRenderer {
+ public:
+  virtual ~GpuSceneRenderer() = default;
+  virtual Image render(const Camera& camera, const RenderOptions& options) const = 0;
+  // "vulkan: llvmpipe (LLVM 15.0.6, 256 bits)"
+  virtual std::string device_name() const = 0;
+};
+
+// vri::Error with one line when this build has no Vulkan backend, no device
+// is usable, or the scene's method or options are not on the GPU yet.
+std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene);
+
+// `vri devices`: each Vulkan device, one line ("0: llvmpipe (LLVM 15.0.6,
+// 256 bits), CPU, Vulkan 1.3.230"); an empty list when there are none.
+// vri::Error when the build or the machine has no Vulkan loader.
+std::vector<std::string> list_vulkan_devices();
+
+}  // namespace vri

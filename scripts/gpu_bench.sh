@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# gpu_bench.sh [BUILD_DIR] [REPEATS]: the GPU figures of docs/GPU.md (issue
+# 22, item 6): frame time of `preint1` and `riemann` (step 1, 512 x 512) on
+# neghip and bonsai with --backend vulkan beside --backend cpu (2 threads) in
+# the same run, the fastest of REPEATS renders as `vri render` reports them
+# (the render alone: rays set up, the dispatch, the image read back; not the
+# volume upload or the table build), and whether the two images are within
+# 1e-4. Prints the machine and the Vulkan device first: on a machine without
+# a GPU that device is lavapipe, Mesa's CPU emulation, and its times are
+# labelled so.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+repeats=${2:-3}
+vri="$build/vri"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)), load $(cut -d' ' -f1-3 /proc/loadavg)"
+device=$("$vri" devices | head -1)
+echo "# Vulkan device: $device"
+case "$device" in *llvmpipe*|*lavapipe*|*", CPU,"*) label="lavapipe (CPU emulation, not a GPU)";; *) label="GPU";; esac
+# The fastest render time of `vri render ARGS` over the repeats.
+best() {
+  local t best=
+  for _ in $(seq "$repeats"); do
+    t=$("$vri" render "$@" 2>&1 >/dev/null | sed -n "s/.* in \([0-9.e-]*\) s (CPU.*/\1/p")
+    best=$(awk -v a="$t" -v b="${best:-$t}" 'BEGIN { print (a < b ? a : b) }')
+  done
+  echo "$best"
+}
+echo
+echo "| scene | method | CPU ms (2 threads) | Vulkan ms ($label) | CPU / Vulkan | max difference |"
+echo "|---|---|---|---|---|---|"
+for scene in neghip bonsai; do
+  for method in preint1 riemann; do
+    args=(scenes/$scene.json --method "$method" --step 1 --width 512 --height 512)
+    cpu=$(best "${args[@]}" -o "$tmp/cpu.npy" --threads 2)
+    gpu=$(best "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
+    diff=$("$vri" compare "$tmp/gpu.npy" "$tmp/cpu.npy" --tolerance 1e-4 | awk 'NR > 1 { if ($4 > m) m = $4 } END { printf "%.1e", m }')
+    awk -v s="$scene" -v m="$method" -v c="$cpu" -v g="$gpu" -v d="$diff" \
+      'BEGIN { printf "| %s | %s | %.1f | %.1f | %.2f | %s |\n", s, m, 1000 * c, 1000 * g, c / g, d }'
+  done
+done
+echo
+echo "Table builds on the GPU (256^3 second-order table): not on the GPU yet (issue 22, item 3)."

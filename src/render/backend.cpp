@@ -1,0 +1,28 @@
+#include "vri/render/backend.hpp"
+
+#include "vri/core/error.hpp"
+
+namespace vri {
+
+Backend parse_backend(const std::string& name) {
+  if (name == "cpu") return Backend::Cpu;
+  if (name == "vulkan") return Backend::Vulkan;
+  throw Error("backend must be cpu or vulkan, not '" + name + "'");
+}
+
+std::string backend_name(Backend backend) { return backend == Backend::Cpu ? "cpu" : "vulkan"; }
+
+#if !VRI_VULKAN
+// This build has no Vulkan backend (vulkan/CMakeLists.txt provides these otherwise).
+bool vulkan_backend_built() { return false; }
+
+std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene&) {
+  throw Error("this vri was built without the Vulkan backend (install libvulkan-dev and glslc, then rebuild)");
+}
+
+std::vector<std::string> list_vulkan_devices() {
+  throw Error("this vri was built without the Vulkan backend (install libvulkan-dev and glslc, then rebuild)");
+}
+#endif
+
+}  // namespace vri

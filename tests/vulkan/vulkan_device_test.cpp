@@ -1,0 +1,74 @@
+// The Vulkan device and the command line around it (issue 22, items 1 and 5):
+// `vri devices`, `--backend vulkan` giving the CPU's PNG, VRI_VULKAN_DEVICE,
+// and a machine without a driver getting one clear line and no file.
+#include <gtest/gtest.h>
+
+#include "cli/cli_support.hpp"
+#include "vulkan_device.hpp"
+
+namespace vri::test {
+namespace {
+
+TEST(VulkanDevice, ListsAUsableDeviceAndSharesIt) {
+  const auto devices = vulkan::VulkanDevice::list();
+  ASSERT_FALSE(devices.empty()) << "the tests need a Vulkan device (mesa-vulkan-drivers gives lavapipe)";
+  bool usable = false;
+  for (const auto& d : devices) usable = usable || d.usable;
+  EXPECT_TRUE(usable);
+  const auto a = vulkan::VulkanDevice::shared(), b = vulkan::VulkanDevice::shared();
+  EXPECT_EQ(a.get(), b.get());
+  EXPECT_FALSE(a->info().name.empty());
+  EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
+}
+
+TEST(VulkanCli, DevicesAndBackendFlag) {
+  TempDir dir;
+  const ProcessResult list = run("devices", dir);
+  ASSERT_EQ(list.code, 0) << list.err;
+  EXPECT_EQ(list.out.rfind("0: ", 0), 0u) << list.out;
+
+  const std::string scene = source_path("scenes/engine.json");
+  const std::string flags = " --method riemann --step 1.5 --width 40 --height 32 -q";
+  const ProcessResult gpu =
+      run("render " + scene + flags + " --backend vulkan -o " + (dir / "gpu.png").string(), dir,
+          "VRI_VULKAN_VALIDATION=1 ");
+  ASSERT_EQ(gpu.code, 0) << gpu.err;
+  EXPECT_EQ(gpu.err.find("validation"), std::string::npos) << gpu.err;
+  ASSERT_EQ(run("render " + scene + flags + " -o " + (dir / "cpu.png").string(), dir).code, 0);
+  EXPECT_EQ(slurp(dir / "gpu.png"), slurp(dir / "cpu.png"));  // lavapipe: the same bytes
+
+  const ProcessResult bad = run("render " + scene + flags + " --backend metal -o " + (dir / "x.png").string(), dir);
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("backend must be cpu or vulkan"), std::string::npos) << bad.err;
+  const ProcessResult index =
+      run("render " + scene + flags + " --backend vulkan -o " + (dir / "x.png").string(), dir, "VRI_VULKAN_DEVICE=7 ");
+  EXPECT_EQ(index.code, 1);
+  EXPECT_NE(index.err.find("VRI_VULKAN_DEVICE=7 names no device"), std::string::npos) << index.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+TEST(VulkanCli, NoDriverIsOneLineAndNoFile) {
+  TempDir dir;
+  // (Validation off: with it the loader itself reports the missing file.)
+  const std::string no_driver = "VRI_VULKAN_VALIDATION=0 VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json ";
+  const ProcessResult list = run("devices", dir, no_driver);
+  EXPECT_EQ(list.code, 1);
+  EXPECT_NE(list.err.find("no Vulkan device found"), std::string::npos) << list.err;
+  const ProcessResult r = run("render " + source_path("scenes/engine.json") +
+                                  " --method riemann --width 8 --height 8 --backend vulkan -o " +
+                                  (dir / "x.png").string(),
+                              dir, no_driver);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("vri: error: vulkan: no Vulkan"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+  // The CPU backend does not need Vulkan at all.
+  EXPECT_EQ(run("render " + source_path("scenes/engine.json") + " --method riemann --width 8 --height 8 -q -o " +
+                    (dir / "y.png").string(),
+                dir, no_driver)
+                .code,
+            0);
+}
+
+}  // namespace
+}  // namespace vri::test

@@ -1,0 +1,47 @@
+#pragma once
+// GpuBuffer: a storage buffer in the device's memory (device-local where the
+// device has it) with copies in and out. Where that memory is also visible
+// to the host (integrated GPUs, lavapipe) the copies are memcpy; elsewhere
+// they go through a host-visible staging buffer.
+#include <cstddef>
+#include <memory>
+#include <span>
+
+#include "vulkan_device.hpp"
+
+namespace vri::vulkan {
+
+class GpuBuffer {
+ public:
+  // `bytes` > 0; vri::Error if the device cannot hold it.
+  GpuBuffer(std::shared_ptr<const VulkanDevice> device, std::size_t bytes);
+  // A buffer holding `data` (not empty).
+  GpuBuffer(std::shared_ptr<const VulkanDevice> device, std::span<const std::byte> data);
+  ~GpuBuffer();
+  GpuBuffer(const GpuBuffer&) = delete;
+  GpuBuffer& operator=(const GpuBuffer&) = delete;
+
+  VkBuffer handle() const { return buffer_; }
+  std::size_t size() const { return bytes_; }
+  // Copies `data` (at most size() bytes) to the buffer's start / the
+  // buffer's first out.size() bytes out.
+  void upload(std::span<const std::byte> data);
+  void download(std::span<std::byte> out) const;
+
+ private:
+  struct Allocation {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    bool host_visible = false;
+  };
+  Allocation allocate(VkBufferUsageFlags usage, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
+  void free(Allocation& a) const;
+
+  std::shared_ptr<const VulkanDevice> device_;
+  std::size_t bytes_;
+  VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  bool host_visible_ = false;
+};
+
+}  // namespace vri::vulkan

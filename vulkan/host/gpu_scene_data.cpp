@@ -1,0 +1,69 @@
+#include "gpu_scene_data.hpp"
+
+#include <cstring>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+#include "vri/core/error.hpp"
+
+namespace vri::vulkan {
+
+namespace {
+
+// Bytes rounded up to whole 32-bit words (a buffer the shader reads as uint[]).
+std::size_t word_bytes(std::size_t bytes) { return (bytes + 3) / 4 * 4; }
+
+int type_code(const GridVolume& volume) {
+  return volume.visit([](auto v) {
+    using T = typename decltype(v)::value_type;
+    if constexpr (std::is_same_v<T, std::uint8_t>) return 0;
+    else if constexpr (std::is_same_v<T, std::uint16_t>) return 1;
+    else if constexpr (std::is_same_v<T, std::int16_t>) return 2;
+    else return 3;
+  });
+}
+
+template <class T>
+std::span<const std::byte> as_bytes_of(const std::vector<T>& v) {
+  return std::as_bytes(std::span<const T>(v));
+}
+
+}  // namespace
+
+GpuVolume::GpuVolume(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume)
+    : samples(std::move(device), word_bytes(volume.bytes())), type(type_code(volume)) {
+  volume.visit([&](auto v) { samples.upload(std::as_bytes(v)); });
+}
+
+GpuShading::GpuShading(std::shared_ptr<const VulkanDevice> device, const Lighting& lighting,
+                       const HeadlightShader& shader, const GridVolume& volume)
+    : gradients(std::move(device), 3 * sizeof(float) * volume.size()),
+      ka(static_cast<float>(lighting.ambient)),
+      kd(static_cast<float>(lighting.diffuse)),
+      ks(static_cast<float>(lighting.specular)),
+      shininess(static_cast<float>(lighting.shininess)),
+      flat(static_cast<float>(shader.flat_threshold())) {
+  gradients.upload(std::as_bytes(std::span<const float>(shader.gradients().data(), 3 * volume.size())));
+}
+
+GpuTransferFunction::GpuTransferFunction(std::shared_ptr<const VulkanDevice> device, const FloatTransferFunction& tf)
+    : values(device, sizeof(float) * 10 * static_cast<std::size_t>(tf.segments())),
+      bins(device, sizeof(int) * FloatTransferFunction::kBins),
+      segments(tf.segments()),
+      lo(tf.lo()),
+      scale(tf.scale()) {
+  if (tf.breakpoint_count() != segments) throw Error("vulkan: a transfer function with unmatched breakpoints");
+  const std::size_t n = static_cast<std::size_t>(segments);
+  std::vector<float> v(10 * n);
+  std::memcpy(v.data(), tf.breakpoints(), n * sizeof(float));
+  std::memcpy(v.data() + n, tf.s_ref(), n * sizeof(float));
+  for (int c = 0; c < 4; ++c) {
+    std::memcpy(v.data() + (2 + c) * n, tf.value(c), n * sizeof(float));
+    std::memcpy(v.data() + (6 + c) * n, tf.slope(c), n * sizeof(float));
+  }
+  values.upload(as_bytes_of(v));
+  bins.upload(std::as_bytes(std::span<const int>(tf.first(), FloatTransferFunction::kBins)));
+}
+
+}  // namespace vri::vulkan

@@ -1,0 +1,39 @@
+#pragma once
+// A scene's data on the device, the same for every GPU method: the volume's
+// samples packed in 32-bit words in their stored type (grid_sampler.glsl)
+// and the transfer function as FloatTransferFunction holds it
+// (transfer_function.glsl).
+#include <memory>
+
+#include "gpu_buffer.hpp"
+#include "vri/shading/headlight_shader.hpp"
+#include "vri/transfer/float_transfer_function.hpp"
+#include "vri/volume/grid_volume.hpp"
+
+namespace vri::vulkan {
+
+struct GpuVolume {
+  GpuVolume(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume);
+  GpuBuffer samples;
+  int type;  // grid_sampler.glsl's kUInt8, kUInt16, kInt16, kFloat32
+};
+
+// SPEC §5 on the device: the gradient field the CPU computes (three floats a
+// grid point, shading.glsl) and the coefficients, as the shaders' push
+// constants take them.
+struct GpuShading {
+  GpuShading(std::shared_ptr<const VulkanDevice> device, const Lighting& lighting, const HeadlightShader& shader,
+             const GridVolume& volume);
+  GpuBuffer gradients;
+  float ka, kd, ks, shininess, flat;
+};
+
+struct GpuTransferFunction {
+  GpuTransferFunction(std::shared_ptr<const VulkanDevice> device, const FloatTransferFunction& tf);
+  GpuBuffer values;  // breakpoints, s_ref, value r g b tau, slope r g b tau; `segments` each
+  GpuBuffer bins;    // first segment per bin
+  int segments;
+  float lo, scale;
+};
+
+}  // namespace vri::vulkan

@@ -1,0 +1,37 @@
+#pragma once
+// A per-pixel march on the GPU: one invocation per pixel in groups of 64 (a
+// second dispatch dimension once the first is full), the image read back as
+// the Image the CPU renderer returns. Every march's push constants start
+// with GridParams (shaders/grid_params.glsl).
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "compute_kernel.hpp"
+#include "vri/render/image.hpp"
+#include "vri/volume/grid_volume.hpp"
+
+namespace vri::vulkan {
+
+struct GridParams {
+  std::uint32_t sy, sz;
+  std::int32_t type;
+  std::uint32_t pixels;
+  float top[3];
+  std::uint32_t row_pixels;
+  std::int32_t last_cell[3];
+  float termination;
+};
+static_assert(sizeof(GridParams) == 48 && offsetof(GridParams, top) == 16 && offsetof(GridParams, last_cell) == 32);
+
+// The volume's part of GridParams (the dispatch's part is set by run_pixels).
+GridParams grid_params(const GridVolume& volume, int type, double termination);
+
+// Runs `kernel` over width x height pixels with `inputs` bound at 0 .. n-1
+// and the image at n. `params` is the kernel's push-constant block and
+// `grid` its first member, which this completes (pixels, row_pixels).
+Image run_pixels(const std::shared_ptr<const VulkanDevice>& device, const ComputeKernel& kernel, int width,
+                 int height, std::span<const GpuBuffer* const> inputs, GridParams& grid, const void* params);
+
+}  // namespace vri::vulkan

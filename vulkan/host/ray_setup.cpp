@@ -1,0 +1,129 @@
+#include "ray_setup.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "integrators/float_riemann.hpp"  // riemann_samples, jitter_fraction
+#include "vri/tables/slab_integral.hpp"
+#include "vri/volume/float_sampler.hpp"
+
+namespace vri::vulkan {
+
+namespace {
+
+void put(float* out, double x) {  // x as hi + lo
+  const float hi = static_cast<float>(x);
+  out[0] = hi;
+  out[3] = static_cast<float>(x - static_cast<double>(hi));
+}
+
+void put_pair(float* out, double x) {
+  const float hi = static_cast<float>(x);
+  out[0] = hi;
+  out[1] = static_cast<float>(x - static_cast<double>(hi));
+}
+
+// f(y) for every row y of the image, on `threads` threads (0: every core).
+template <class Row>
+void for_rows(int height, int threads, const Row& row) {
+  const auto rows = [&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, height, 8), [&](const tbb::blocked_range<int>& r) {
+      for (int y = r.begin(); y < r.end(); ++y) row(y);
+    });
+  };
+  if (threads > 0) {
+    tbb::task_arena arena(threads);
+    arena.execute(rows);
+  } else {
+    rows();
+  }
+}
+
+void put_direction(float* out, const Ray& ray) {
+  const auto d = detail::direction(ray);
+  for (int a = 0; a < 3; ++a) out[a] = d[a];
+}
+
+// A count as the float whose bits are its int32 (the shaders read it with floatBitsToInt).
+float count_bits(long long n) {
+  return std::bit_cast<float>(static_cast<std::int32_t>(std::min<long long>(n, INT32_MAX)));
+}
+
+}  // namespace
+
+std::vector<float> riemann_rays(const Camera& camera, const GridVolume& volume, double h,
+                                std::optional<std::uint64_t> jitter, int threads) {
+  const int W = camera.width(), H = camera.height();
+  std::vector<float> out(static_cast<std::size_t>(W) * H * kRiemannRayFloats, 0.0f);
+  const FloatSampler sampler(volume);
+  const auto row = [&](int y) {
+    for (int x = 0; x < W; ++x) {
+      float* r = out.data() + (static_cast<std::size_t>(y) * W + x) * kRiemannRayFloats;
+      const Ray ray = camera.ray(x, y);
+      const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
+      if (!iv) continue;  // no samples: transparent
+      const double u = jitter ? detail::jitter_fraction(ray, *jitter) : 0.0;
+      long long n = detail::riemann_samples(*iv, h);
+      // The CPU stops at the first step with h_k <= 0 (a ray that only grazes the box).
+      double h_last = std::min(h, iv->t1 - (iv->t0 + static_cast<double>(n - 1) * h));
+      if (!(h_last > 0)) {
+        --n;
+        h_last = n > 0 ? std::min(h, iv->t1 - (iv->t0 + static_cast<double>(n - 1) * h)) : 0.0;
+      }
+      if (n <= 0) continue;
+      const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
+      for (int a = 0; a < 3; ++a) {
+        put(r + a, u0[a]);
+        put(r + 6 + a, du[a]);
+      }
+      put_pair(r + 12, u);
+      put_pair(r + 14, h_last < h ? u * h_last / h : u);
+      r[16] = static_cast<float>(h_last);
+      r[17] = count_bits(n);
+      put_direction(r + 18, ray);
+    }
+  };
+  for_rows(H, threads, row);
+  return out;
+}
+
+std::vector<float> preint1_rays(const Camera& camera, const GridVolume& volume, const DiscreteTf& tf,
+                                const detail::FloatLighting& lighting, double h, int threads) {
+  const int W = camera.width(), H = camera.height();
+  std::vector<float> out(static_cast<std::size_t>(W) * H * kPreint1RayFloats, 0.0f);
+  const FloatSampler sampler(volume);
+  volume.visit([&](auto values) {
+    for_rows(H, threads, [&](int y) {
+      for (int x = 0; x < W; ++x) {
+        float* r = out.data() + (static_cast<std::size_t>(y) * W + x) * kPreint1RayFloats;
+        const Ray ray = camera.ray(x, y);
+        const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
+        if (!iv) {
+          r[12] = count_bits(-1);
+          continue;
+        }
+        // As march_float and finish_float (float_march.hpp) with one step a slab.
+        const long long full = static_cast<long long>(std::floor(iv->length() / h));
+        const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
+        for (int a = 0; a < 3; ++a) {
+          put(r + a, u0[a]);
+          put(r + 6 + a, du[a]);
+        }
+        r[12] = count_bits(full);
+        put_direction(r + 17, ray);
+        const detail::FloatSample front = detail::sample_at(sampler, values.data(), lighting, detail::direction(ray),
+                                                            u0 + static_cast<double>(full) * du);
+        const Float4 v = detail::last_slabs<1>(sampler, values.data(), tf, lighting, ray, *iv, full, h, front)[0];
+        for (int c = 0; c < 4; ++c) r[13 + c] = v[c];
+      }
+    });
+  });
+  return out;
+}
+
+}  // namespace vri::vulkan

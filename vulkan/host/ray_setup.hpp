@@ -1,0 +1,38 @@
+#pragma once
+// The rays of a GPU march, set up on the host in double exactly as the CPU
+// float paths set them up (clip to the box, sample count, the partial last
+// step, the jitter's fraction), so the GPU and the CPU take their samples at
+// the same places and differ only by float roundings per sample. Positions
+// travel as double-float pairs (vulkan/shaders/double_float.glsl).
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "vri/camera/camera.hpp"
+#include "integrators/float_march.hpp"  // FloatLighting, last_slabs
+#include "vri/tables/discrete_tf.hpp"
+#include "vri/volume/grid_volume.hpp"
+
+namespace vri::vulkan {
+
+// riemann's ray, 21 floats (vulkan/shaders/riemann.comp): u0 hi x3, lo x3;
+// du hi x3, lo x3; o hi, lo; o of the last step hi, lo; h_k of the last
+// step; the number of samples (int bits); the direction in float.
+inline constexpr int kRiemannRayFloats = 21;
+
+// Every pixel's riemann ray, row by row, for step h (world units); threads
+// as RenderOptions (0: every core).
+std::vector<float> riemann_rays(const Camera& camera, const GridVolume& volume, double h,
+                                std::optional<std::uint64_t> jitter, int threads);
+
+// preint1's ray, 20 floats (vulkan/shaders/preint1.comp): u0 hi x3, lo x3;
+// du hi x3, lo x3; the number of whole slabs (int bits; -1: the ray misses
+// the volume); the partial last slab's (r, g, b, alpha), integrated exactly
+// and lit as on the CPU (last_slabs, src/integrators/float_march.hpp); the
+// direction in float.
+inline constexpr int kPreint1RayFloats = 20;
+
+std::vector<float> preint1_rays(const Camera& camera, const GridVolume& volume, const DiscreteTf& tf,
+                                const detail::FloatLighting& lighting, double h, int threads);
+
+}  // namespace vri::vulkan

@@ -1,0 +1,37 @@
+// The Vulkan backend's entry points (include/vri/render/backend.hpp): which
+// method runs on the GPU, and the device list of `vri devices`.
+#include <string>
+#include <vector>
+
+#include "vri/core/error.hpp"
+#include "vri/render/backend.hpp"
+#include "vri/scene/scene.hpp"
+#include "vulkan_device.hpp"
+#include "vulkan_preint1.hpp"
+#include "vulkan_riemann.hpp"
+
+namespace vri {
+
+bool vulkan_backend_built() { return true; }
+
+std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene) {
+  const std::string& m = scene.method.name;
+  if (!std::holds_alternative<GridVolume>(scene.volume))
+    throw Error("--backend vulkan: tetrahedral meshes are not on the GPU yet (docs/GPU.md); use --backend cpu");
+  if (m != "riemann" && m != "preint1")
+    throw Error("--backend vulkan: method '" + m + "' is not on the GPU yet; riemann and preint1 are (docs/GPU.md)");
+  if (!scene.method.fast.float_math)
+    throw Error("--backend vulkan: the GPU computes in float; --double needs --backend cpu");
+  if (m == "preint1") return std::make_unique<vulkan::VulkanPreint1>(vulkan::VulkanDevice::shared(), scene);
+  return std::make_unique<vulkan::VulkanRiemann>(vulkan::VulkanDevice::shared(), scene);
+}
+
+std::vector<std::string> list_vulkan_devices() {
+  std::vector<std::string> out;
+  for (const vulkan::DeviceInfo& d : vulkan::VulkanDevice::list())
+    out.push_back(std::to_string(d.index) + ": " + d.name + ", " + d.type + ", Vulkan " + d.api +
+                  (d.usable ? "" : " (not usable: " + d.why_not + ")"));
+  return out;
+}
+
+}  // namespace vri

@@ -1,0 +1,61 @@
+#include "vulkan_riemann.hpp"
+
+#include <cstddef>
+#include <cstdint>
+
+#include "pixel_kernel.hpp"
+#include "ray_setup.hpp"
+#include "vri/transfer/float_transfer_function.hpp"
+
+namespace vri::vulkan {
+
+namespace {
+
+const std::uint32_t kSpirv[] = {
+#include "riemann.spv.inc"
+};
+
+// riemann.comp's push constants.
+struct Params {
+  GridParams grid;
+  float h;
+  float tf_lo, tf_scale;
+  std::int32_t tf_bins, segments;
+  std::int32_t lit;
+  float ka, kd, ks, shininess, flat;
+};
+
+}  // namespace
+
+VulkanRiemann::VulkanRiemann(std::shared_ptr<const VulkanDevice> device, const Scene& scene)
+    : device_(std::move(device)),
+      scene_(scene),
+      h_(scene.method.step * scene.grid().voxel_unit()),
+      volume_(device_, scene.grid()),
+      tf_(device_, FloatTransferFunction(scene.transfer_function)),
+      kernel_(device_, kSpirv, 6, sizeof(Params)) {
+  if (!scene.lighting.enabled) return;
+  shader_.emplace(scene.lighting, scene.grid());
+  shading_.emplace(device_, scene.lighting, *shader_, scene.grid());
+}
+
+Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) const {
+  throw_if_cancelled(options);
+  const GridVolume& volume = scene_.grid();
+  const std::vector<float> rays = riemann_rays(camera, volume, h_, scene_.method.jitter, options.threads);
+  GpuBuffer ray_buffer(device_, rays.size() * sizeof(float));
+  ray_buffer.upload(std::as_bytes(std::span<const float>(rays)));
+  Params p{grid_params(volume, volume_.type, scene_.method.fast.termination), static_cast<float>(h_), tf_.lo,
+           tf_.scale, FloatTransferFunction::kBins, tf_.segments, 0, 0, 0, 0, 0, 0};
+  if (shading_) {
+    p.lit = 1;
+    p.ka = shading_->ka, p.kd = shading_->kd, p.ks = shading_->ks;
+    p.shininess = shading_->shininess, p.flat = shading_->flat;
+  }
+  // Unlit, the volume stands in for the gradients the shader does not read.
+  const GpuBuffer* inputs[] = {&volume_.samples, &tf_.values, &tf_.bins, &ray_buffer,
+                               shading_ ? &shading_->gradients : &volume_.samples};
+  return run_pixels(device_, kernel_, camera.width(), camera.height(), inputs, p.grid, &p);
+}
+
+}  // namespace vri::vulkan

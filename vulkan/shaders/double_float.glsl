@@ -1,0 +1,49 @@
+// Positions along a ray in double-float (a value as hi + lo, two floats;
+// Dekker 1971, Knuth's two-sum): the CPU float paths place sample k at
+// u0 + k du in double (float_march.hpp, float_riemann.hpp); in float alone a
+// position 500 voxels in would be off by 3e-5 voxel, and a steep transfer
+// function turns that into visible differences. Not every GPU has float64
+// (Apple's none, consumer NVIDIA's at 1/64 rate): these need only fma-free
+// float arithmetic, kept exact by `precise` (no contraction, no reordering).
+
+struct DF {
+  float hi, lo;
+};
+
+DF df_two_sum(float a, float b) {
+  precise float s = a + b;
+  precise float bb = s - a;
+  precise float e = (a - (s - bb)) + (b - bb);
+  return DF(s, e);
+}
+
+DF df_fast_two_sum(float a, float b) {  // |a| >= |b|
+  precise float s = a + b;
+  precise float e = b - (s - a);
+  return DF(s, e);
+}
+
+// a * b exactly as hi + lo, by Dekker's split (no fma: the same on every device).
+DF df_two_prod(float a, float b) {
+  precise float p = a * b;
+  precise float ca = 4097.0 * a;
+  precise float ah = ca - (ca - a);
+  precise float al = a - ah;
+  precise float cb = 4097.0 * b;
+  precise float bh = cb - (cb - b);
+  precise float bl = b - bh;
+  precise float e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+  return DF(p, e);
+}
+
+DF df_add(DF a, DF b) {
+  DF s = df_two_sum(a.hi, b.hi);
+  precise float lo = s.lo + (a.lo + b.lo);
+  return df_fast_two_sum(s.hi, lo);
+}
+
+DF df_mul(DF a, DF b) {
+  DF p = df_two_prod(a.hi, b.hi);
+  precise float lo = p.lo + (a.hi * b.lo + a.lo * b.hi);
+  return df_fast_two_sum(p.hi, lo);
+}

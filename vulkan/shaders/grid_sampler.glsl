@@ -1,0 +1,63 @@
+// The volume's samples and their trilinear interpolation, as FloatSampler
+// (include/vri/volume/float_sampler.hpp) does on the CPU: the cell of a grid
+// position clamped onto the box, float fractions, the eight corners
+// converted to float exactly and interpolated in the same order. The samples
+// stay in their stored type, packed in 32-bit words (uint8 four to a word,
+// 16-bit two): a 256^3 uint8 volume takes 16 MiB on the GPU, not 64.
+// Needs before it: buffer Volume { uint words[]; } volume; and the
+// push-constant block `p` with the volume's layout (grid.type, sy, sz, top,
+// last_cell).
+
+// The storage types of GridVolume (other file types are converted on loading).
+const int kUInt8 = 0, kUInt16 = 1, kInt16 = 2, kFloat32 = 3;
+
+float voxel(uint i) {
+  switch (p.type) {
+    case kUInt8: return float((volume.words[i >> 2] >> ((i & 3u) * 8u)) & 0xffu);
+    case kUInt16: return float((volume.words[i >> 1] >> ((i & 1u) * 16u)) & 0xffffu);
+    case kInt16: return float(bitfieldExtract(int(volume.words[i >> 1]), int((i & 1u) * 16u), 16));
+    default: return uintBitsToFloat(volume.words[i]);
+  }
+}
+
+struct Cell {
+  uint offset;
+  vec3 f;
+};
+
+// The cell of grid position (x, y, z) in double-float, clamped as FloatSampler::cell.
+Cell grid_cell(DF u[3]) {
+  Cell c;
+  int idx[3];
+  for (int a = 0; a < 3; ++a) {
+    DF x = u[a];
+    if (x.hi < 0.0 || (x.hi == 0.0 && x.lo < 0.0)) x = DF(0.0, 0.0);
+    if (x.hi > p.top[a] || (x.hi == p.top[a] && x.lo > 0.0)) x = DF(p.top[a], 0.0);
+    float fl = floor(x.hi);
+    if (fl == x.hi && x.lo < 0.0) fl -= 1.0;  // hi an integer, the value just below it
+    int i = int(fl);
+    precise float f = (x.hi - fl) + x.lo;  // x.hi - fl is exact
+    if (i > p.last_cell[a]) {
+      f += float(i - p.last_cell[a]);
+      i = p.last_cell[a];
+    }
+    idx[a] = i;
+    c.f[a] = f;
+  }
+  c.offset = uint(idx[0]) + p.sy * uint(idx[1]) + p.sz * uint(idx[2]);
+  return c;
+}
+
+float interpolate(Cell c) {
+  const uint o = c.offset, y = p.sy, z = p.sz;
+  float v0 = voxel(o), v1 = voxel(o + 1u), v2 = voxel(o + y), v3 = voxel(o + y + 1u);
+  float v4 = voxel(o + z), v5 = voxel(o + z + 1u), v6 = voxel(o + z + y), v7 = voxel(o + z + y + 1u);
+  precise float c00 = v0 + c.f.x * (v1 - v0);
+  precise float c10 = v2 + c.f.x * (v3 - v2);
+  precise float c01 = v4 + c.f.x * (v5 - v4);
+  precise float c11 = v6 + c.f.x * (v7 - v6);
+  precise float c0 = c00 + c.f.y * (c10 - c00);
+  precise float c1 = c01 + c.f.y * (c11 - c01);
+  precise float s = c0 + c.f.z * (c1 - c0);
+  return s;
+}
