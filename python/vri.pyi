@@ -79,6 +79,9 @@ def render(scene: SceneLike, *, method: Optional[str] = None, step: Optional[flo
            zoom: Optional[float] = None, backend: Optional[str] = None) -> npt.NDArray[np.float32]:
     """float32 (H, W, 4), premultiplied RGBA: the same bytes as `vri render -o OUT.npy`."""
 
+has_vulkan: bool
+"""Whether this build has the GPU backend (backend="vulkan")."""
+
 def devices() -> List[str]:
     """The Vulkan devices backend='vulkan' can use (`vri devices`)."""
 

@@ -2,6 +2,7 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings.hpp"
+#include "vri/render/backend.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri::python {
@@ -29,6 +30,8 @@ PYBIND11_MODULE(vri, m) {
       "tet-raycast) and compare them against the exact integral. Images are float32 numpy\n"
       "arrays (H, W, 4), premultiplied RGBA, the same bytes as `vri render -o X.npy`.";
   m.attr("__version__") = VRI_VERSION;
+  // Whether this build has the GPU backend (backend="vulkan"; docs/GPU.md).
+  m.attr("has_vulkan") = vri::vulkan_backend_built();
   vri::python::bind_errors(m);
   vri::python::bind_volumes(m);
   vri::python::bind_scenes(m);

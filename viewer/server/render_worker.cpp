@@ -105,7 +105,7 @@ void RenderWorker::open(const std::string& id) {
   output_.text(welcome.dump());
 }
 
-RenderWorker::Prepared& RenderWorker::prepare(Prepared& slot, const json& scene) {
+RenderWorker::Prepared& RenderWorker::prepare(Prepared& slot, const json& scene, Backend backend) {
   json without_camera = scene;
   without_camera.erase("camera");
   std::string key = without_camera.dump();
@@ -113,7 +113,7 @@ RenderWorker::Prepared& RenderWorker::prepare(Prepared& slot, const json& scene)
   const auto start = std::chrono::steady_clock::now();
   slot = {};
   slot.scene = std::make_unique<Scene>(parse_scene(scene.dump(), dataset_->volume, dataset_->base_dir, "render.scene"));
-  slot.renderer = std::make_unique<SceneRenderer>(*slot.scene, backend_);
+  slot.renderer = std::make_unique<SceneRenderer>(*slot.scene, backend);
   slot.key = std::move(key);
   slot.setup_ms = ms_since(start);
   return slot;
@@ -126,7 +126,7 @@ void RenderWorker::send_frame(std::int64_t seq, json header, const std::vector<s
 }
 
 void RenderWorker::render(const RenderRequest& request) {
-  Prepared& m = prepare(method_, request.scene);
+  Prepared& m = prepare(method_, request.scene, backend_);
   // The request's own camera: the prepared scene may be one orbited from.
   const CameraSpec spec = parse_camera(request.scene.at("camera").dump(), "render.scene");
   const RenderOptions options{.threads = threads_, .cancel = &cancel_};
@@ -166,13 +166,14 @@ void RenderWorker::render(const RenderRequest& request) {
   send_frame(request.seq, header, png);
   if (!request.error_map && !request.refine) return;
 
-  // When idle: the reference, the scene with `exact` as its method.
+  // When idle: the reference, the scene with `exact` as its method, on the
+  // CPU whatever the backend (exact is the CPU's reference; docs/GPU.md).
   json exact_scene = request.scene;
   exact_scene["method"] = {{"name", "exact"}, {"tolerance", kExactTolerance}};
   const std::string reference_key = exact_scene.dump();
   if (!reference_ || reference_->key != reference_key) {
     reference_.reset();
-    Prepared& e = prepare(exact_, exact_scene);
+    Prepared& e = prepare(exact_, exact_scene, Backend::Cpu);
     const auto start = std::chrono::steady_clock::now();
     Image image = e.renderer->render(Camera(spec), options);
     reference_ = Rendered{reference_key, std::move(image), ms_since(start)};

@@ -68,7 +68,7 @@ class RenderWorker {
   void handle(const ClientMessage& message);
   void open(const std::string& id);
   void render(const RenderRequest& request);
-  Prepared& prepare(Prepared& slot, const nlohmann::json& scene);
+  Prepared& prepare(Prepared& slot, const nlohmann::json& scene, Backend backend);
   void send_frame(std::int64_t seq, nlohmann::json header, const std::vector<std::byte>& image);
 
   DatasetCatalog& catalog_;

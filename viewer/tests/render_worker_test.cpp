@@ -152,6 +152,37 @@ TEST_F(WorkerFixture, BadSceneGetsAnErrorAndTheWorkerGoesOn) {
   EXPECT_EQ(inbox.next().header["stage"], "final");
 }
 
+// `vri view --backend vulkan`: the worker's final frame is the GPU renderer's
+// image (on lavapipe, the CPU's bytes too), the error map's reference is the
+// CPU's exact; a method not on the GPU gets an error reply and the worker
+// goes on.
+TEST(WorkerOnTheGpu, FramesComeFromTheVulkanBackend) {
+  if (!vulkan_backend_built()) GTEST_SKIP() << "built without the Vulkan backend";
+  DatasetCatalog catalog{kRoot / "scenes/neghip.json", kRoot / "scenes"};
+  Inbox inbox;
+  RenderWorker worker{catalog, "neghip", inbox.output(), 2, Backend::Vulkan};
+  const json welcome = inbox.next().header;
+  worker.submit(request(welcome["scene"], 1, Quality::Final));
+  const Frame f = inbox.next();
+  ASSERT_EQ(f.header["stage"], "final") << f.header.dump();
+  json file = request(welcome["scene"], 1, Quality::Final).scene;
+  file["volume"] = welcome["volume"]["json"];
+  const Scene scene = parse_scene(file.dump(), "/", "saved");
+  EXPECT_EQ(f.image, encode_png(SceneRenderer(scene, Backend::Vulkan).render({.threads = 1}), scene.background));
+  RenderRequest exact = request(welcome["scene"], 2, Quality::Final);
+  exact.scene["method"] = {{"name", "exact"}};
+  worker.submit(exact);
+  const Frame e = inbox.next();
+  EXPECT_EQ(e.header["type"], "error");
+  EXPECT_NE(e.header["message"].get<std::string>().find("not on the GPU yet"), std::string::npos);
+  RenderRequest mapped = request(welcome["scene"], 3, Quality::Final);
+  mapped.error_map = true;
+  mapped.error_tolerance = 1e-3;
+  worker.submit(mapped);
+  EXPECT_EQ(inbox.next().header["stage"], "final");
+  EXPECT_EQ(inbox.next().header["stage"], "error_map");
+}
+
 TEST_F(WorkerFixture, ErrorMapAgainstExactAndTheExactFrame) {
   RenderRequest r = request(welcome["scene"], 9, Quality::Final);
   r.scene["method"] = {{"name", "riemann"}, {"step", 4}};  // coarse: a visible error

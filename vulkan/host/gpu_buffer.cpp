@@ -7,12 +7,13 @@
 
 namespace vri::vulkan {
 
-GpuBuffer::GpuBuffer(std::shared_ptr<const VulkanDevice> device, std::size_t bytes)
+GpuBuffer::GpuBuffer(std::shared_ptr<const VulkanDevice> device, std::size_t bytes, const char* what)
     : device_(std::move(device)), bytes_(bytes) {
-  if (bytes_ == 0) throw Error("vulkan: a buffer of 0 bytes");
+  if (bytes_ == 0) throw Error(std::string("vulkan: ") + what + " of 0 bytes");
   if (bytes_ > device_->max_storage_buffer_bytes())
-    throw Error("vulkan: " + std::to_string(bytes_) + " bytes exceed the device's largest storage buffer (" +
-                std::to_string(device_->max_storage_buffer_bytes()) + " bytes)");
+    throw Error(std::string("vulkan: ") + what + " (" + std::to_string(bytes_) +
+                " bytes) exceeds the largest storage buffer of " + device_->info().name + " (" +
+                std::to_string(device_->max_storage_buffer_bytes()) + " bytes); use --backend cpu");
   Allocation a = allocate(VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                               VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                           VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
@@ -20,8 +21,9 @@ GpuBuffer::GpuBuffer(std::shared_ptr<const VulkanDevice> device, std::size_t byt
   buffer_ = a.buffer, memory_ = a.memory, host_visible_ = a.host_visible;
 }
 
-GpuBuffer::GpuBuffer(std::shared_ptr<const VulkanDevice> device, std::span<const std::byte> data)
-    : GpuBuffer(std::move(device), data.size()) {
+GpuBuffer::GpuBuffer(std::shared_ptr<const VulkanDevice> device, std::span<const std::byte> data,
+                     const char* what)
+    : GpuBuffer(std::move(device), data.size(), what) {
   upload(data);
 }
 

@@ -13,10 +13,12 @@ namespace vri::vulkan {
 
 class GpuBuffer {
  public:
-  // `bytes` > 0; vri::Error if the device cannot hold it.
-  GpuBuffer(std::shared_ptr<const VulkanDevice> device, std::size_t bytes);
+  // `bytes` > 0; vri::Error naming `what` ("the gradient field") if the
+  // device cannot hold it.
+  GpuBuffer(std::shared_ptr<const VulkanDevice> device, std::size_t bytes, const char* what = "a buffer");
   // A buffer holding `data` (not empty).
-  GpuBuffer(std::shared_ptr<const VulkanDevice> device, std::span<const std::byte> data);
+  GpuBuffer(std::shared_ptr<const VulkanDevice> device, std::span<const std::byte> data,
+            const char* what = "a buffer");
   ~GpuBuffer();
   GpuBuffer(const GpuBuffer&) = delete;
   GpuBuffer& operator=(const GpuBuffer&) = delete;

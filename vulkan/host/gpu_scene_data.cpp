@@ -32,13 +32,13 @@ std::span<const std::byte> as_bytes_of(const std::vector<T>& v) {
 }  // namespace
 
 GpuVolume::GpuVolume(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume)
-    : samples(std::move(device), word_bytes(volume.bytes())), type(type_code(volume)) {
+    : samples(std::move(device), word_bytes(volume.bytes()), "the volume's samples"), type(type_code(volume)) {
   volume.visit([&](auto v) { samples.upload(std::as_bytes(v)); });
 }
 
 GpuShading::GpuShading(std::shared_ptr<const VulkanDevice> device, const Lighting& lighting,
                        const HeadlightShader& shader, const GridVolume& volume)
-    : gradients(std::move(device), 3 * sizeof(float) * volume.size()),
+    : gradients(std::move(device), 3 * sizeof(float) * volume.size(), "the gradient field (lighting)"),
       ka(static_cast<float>(lighting.ambient)),
       kd(static_cast<float>(lighting.diffuse)),
       ks(static_cast<float>(lighting.specular)),
@@ -48,8 +48,8 @@ GpuShading::GpuShading(std::shared_ptr<const VulkanDevice> device, const Lightin
 }
 
 GpuTransferFunction::GpuTransferFunction(std::shared_ptr<const VulkanDevice> device, const FloatTransferFunction& tf)
-    : values(device, sizeof(float) * 10 * static_cast<std::size_t>(tf.segments())),
-      bins(device, sizeof(int) * FloatTransferFunction::kBins),
+    : values(device, sizeof(float) * 10 * static_cast<std::size_t>(tf.segments()), "the transfer function"),
+      bins(device, sizeof(int) * FloatTransferFunction::kBins, "the transfer function's bins"),
       segments(tf.segments()),
       lo(tf.lo()),
       scale(tf.scale()) {

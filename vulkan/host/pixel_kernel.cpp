@@ -20,19 +20,30 @@ GridParams grid_params(const GridVolume& volume, int type, double termination) {
 }
 
 Image run_pixels(const std::shared_ptr<const VulkanDevice>& device, const ComputeKernel& kernel, int width,
-                 int height, std::span<const GpuBuffer* const> inputs, GridParams& grid, const void* params) {
+                 int height, std::span<const GpuBuffer* const> inputs, std::span<const float> rays, int ray_floats,
+                 GridParams& grid, const void* params) {
   const std::size_t pixels = static_cast<std::size_t>(width) * height;
-  GpuBuffer image_buffer(device, pixels * 4 * sizeof(float));
-  const std::uint64_t groups = (pixels + 63) / 64;
-  const auto gx = static_cast<std::uint32_t>(std::min<std::uint64_t>(groups, device->max_workgroups_x()));
-  const auto gy = static_cast<std::uint32_t>((groups + gx - 1) / gx);
-  grid.pixels = static_cast<std::uint32_t>(pixels);
-  grid.row_pixels = gx * 64;
-  std::vector<const GpuBuffer*> buffers(inputs.begin(), inputs.end());
-  buffers.push_back(&image_buffer);
-  kernel.run(gx, gy, buffers, params);
+  const std::size_t ray_bytes = sizeof(float) * static_cast<std::size_t>(ray_floats), pixel_bytes = 4 * sizeof(float);
+  const std::size_t chunk = std::max<std::size_t>(
+      64, std::min<std::size_t>({pixels, std::size_t{1} << 22, device->max_storage_buffer_bytes() / ray_bytes,
+                                 device->max_storage_buffer_bytes() / pixel_bytes}));
   Image image(width, height);
-  image_buffer.download(std::as_writable_bytes(std::span<float>(image.data())));
+  for (std::size_t first = 0; first < pixels; first += chunk) {
+    const std::size_t n = std::min(chunk, pixels - first);
+    const GpuBuffer ray_buffer(device, std::as_bytes(rays.subspan(first * ray_floats, n * ray_floats)), "the rays");
+    GpuBuffer image_buffer(device, n * pixel_bytes, "the image");
+    const std::uint64_t groups = (n + 63) / 64;
+    const auto gx = static_cast<std::uint32_t>(std::min<std::uint64_t>(groups, device->max_workgroups_x()));
+    const auto gy = static_cast<std::uint32_t>((groups + gx - 1) / gx);
+    grid.pixels = static_cast<std::uint32_t>(n);
+    grid.row_pixels = gx * 64;
+    std::vector<const GpuBuffer*> buffers(inputs.begin(), inputs.end());
+    for (const GpuBuffer*& b : buffers)
+      if (!b) b = &ray_buffer;
+    buffers.push_back(&image_buffer);
+    kernel.run(gx, gy, buffers, params);
+    image_buffer.download(std::as_writable_bytes(std::span<float>(image.data()).subspan(4 * first, 4 * n)));
+  }
   return image;
 }
 

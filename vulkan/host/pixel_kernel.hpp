@@ -29,9 +29,14 @@ static_assert(sizeof(GridParams) == 48 && offsetof(GridParams, top) == 16 && off
 GridParams grid_params(const GridVolume& volume, int type, double termination);
 
 // Runs `kernel` over width x height pixels with `inputs` bound at 0 .. n-1
-// and the image at n. `params` is the kernel's push-constant block and
-// `grid` its first member, which this completes (pixels, row_pixels).
+// and the image at n; the null entry of `inputs` is where the rays go:
+// `rays` holds ray_floats floats a pixel, row by row (ray_setup.hpp).
+// The pixels run in chunks whose rays and image each fit one storage buffer
+// (128 MiB on lavapipe: a 2048² image's rays would not). `params` is the
+// kernel's push-constant block and `grid` its first member, which this
+// completes (pixels, row_pixels).
 Image run_pixels(const std::shared_ptr<const VulkanDevice>& device, const ComputeKernel& kernel, int width,
-                 int height, std::span<const GpuBuffer* const> inputs, GridParams& grid, const void* params);
+                 int height, std::span<const GpuBuffer* const> inputs, std::span<const float> rays, int ray_floats,
+                 GridParams& grid, const void* params);
 
 }  // namespace vri::vulkan

@@ -175,13 +175,13 @@ std::vector<DeviceInfo> VulkanDevice::list() {
 }
 
 std::shared_ptr<VulkanDevice> VulkanDevice::shared() {
+  // Kept for the process once made: a Python session or a viewer renders many
+  // scenes, and a device costs milliseconds (lavapipe) to a second to create.
   static std::mutex mutex;
-  static std::weak_ptr<VulkanDevice> current;
+  static std::shared_ptr<VulkanDevice> current;
   std::lock_guard lock(mutex);
-  if (auto d = current.lock()) return d;
-  std::shared_ptr<VulkanDevice> d(new VulkanDevice());
-  current = d;
-  return d;
+  if (!current) current.reset(new VulkanDevice());
+  return current;
 }
 
 VulkanDevice::VulkanDevice() : api_(global_api()) {

@@ -29,8 +29,9 @@ struct DeviceInfo {
 
 class VulkanDevice {
  public:
-  // The process's device, created on first use; vri::Error with one line
-  // when there is no loader, no device or no usable one.
+  // The process's device, created on first use and kept until the process
+  // ends; vri::Error with one line when there is no loader, no device or no
+  // usable one (and the next call tries again).
   static std::shared_ptr<VulkanDevice> shared();
   // Every device the loader finds (an empty list when there are none);
   // vri::Error only when the loader itself is missing.

@@ -31,13 +31,11 @@ struct Params {
 }  // namespace
 
 VulkanPreint1::VulkanPreint1(std::shared_ptr<const VulkanDevice> device, const Scene& scene)
-    : device_(std::move(device)),
-      scene_(scene),
+    : VulkanGridRenderer(std::move(device), scene),
       h_(detail::world_step(scene.grid(), scene.method.step, "preint1")),
       tf_(scene.transfer_function, scene.method.table_size),
       table_(make_table_builder(scene.method.builder)->build(tf_, h_)),
-      volume_(device_, scene.grid()),
-      table_buffer_(device_, std::as_bytes(table_.data())),
+      table_buffer_(device_, std::as_bytes(table_.data()), "the pre-integration table"),
       sampler_(scene.grid()),
       kernel_(device_, kSpirv, 7, sizeof(Params)) {
   const Lighting& lighting = scene.lighting;
@@ -49,8 +47,8 @@ VulkanPreint1::VulkanPreint1(std::shared_ptr<const VulkanDevice> device, const S
   float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, sampler_);
   if (lighting.mode != "interpolated") return;
   weighted_.emplace(build_weighted_tables(tf_, h_));
-  weighted_front_.emplace(device_, std::as_bytes(weighted_->front.data()));
-  weighted_back_.emplace(device_, std::as_bytes(weighted_->back.data()));
+  weighted_front_.emplace(device_, std::as_bytes(weighted_->front.data()), "the front-weighted table");
+  weighted_back_.emplace(device_, std::as_bytes(weighted_->back.data()), "the back-weighted table");
 }
 
 VulkanPreint1::~VulkanPreint1() = default;
@@ -61,8 +59,6 @@ Image VulkanPreint1::render(const Camera& camera, const RenderOptions& options) 
   detail::FloatLighting lighting{float_shading_.get(), {}};
   if (weighted_) lighting.weighted = {weighted_->front.data().data(), weighted_->back.data().data(), nullptr};
   const std::vector<float> rays = preint1_rays(camera, volume, tf_, lighting, h_, options.threads);
-  GpuBuffer ray_buffer(device_, rays.size() * sizeof(float));
-  ray_buffer.upload(std::as_bytes(std::span<const float>(rays)));
   const FloatAxis axis(table_.axis());
   Params p{grid_params(volume, volume_.type, scene_.method.fast.termination), axis.size(), axis.lo(), axis.scale(),
            0, 0, 0, 0, 0, 0};
@@ -72,11 +68,11 @@ Image VulkanPreint1::render(const Camera& camera, const RenderOptions& options) 
     p.shininess = shading_->shininess, p.flat = shading_->flat;
   }
   // Where a mode does not read a buffer, the volume stands in for it.
-  const GpuBuffer* inputs[] = {&volume_.samples, &table_buffer_, &ray_buffer,
+  const GpuBuffer* inputs[] = {&volume_.samples, &table_buffer_, nullptr /* the rays */,
                                shading_ ? &shading_->gradients : &volume_.samples,
                                weighted_front_ ? &*weighted_front_ : &volume_.samples,
                                weighted_back_ ? &*weighted_back_ : &volume_.samples};
-  return run_pixels(device_, kernel_, camera.width(), camera.height(), inputs, p.grid, &p);
+  return run_pixels(device_, kernel_, camera.width(), camera.height(), inputs, rays, kPreint1RayFloats, p.grid, &p);
 }
 
 }  // namespace vri::vulkan

@@ -10,9 +10,7 @@
 #include <optional>
 
 #include "compute_kernel.hpp"
-#include "gpu_scene_data.hpp"
-#include "vri/render/backend.hpp"
-#include "vri/scene/scene.hpp"
+#include "vulkan_grid_renderer.hpp"
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/preintegration_table.hpp"
 #include "vri/tables/weighted_tables.hpp"
@@ -24,20 +22,16 @@ class FloatShading;  // src/integrators/float_shading.hpp
 
 namespace vri::vulkan {
 
-class VulkanPreint1 final : public GpuSceneRenderer {
+class VulkanPreint1 final : public VulkanGridRenderer {
  public:
   VulkanPreint1(std::shared_ptr<const VulkanDevice> device, const Scene& scene);
   ~VulkanPreint1() override;
   Image render(const Camera& camera, const RenderOptions& options) const override;
-  std::string device_name() const override { return "vulkan: " + device_->info().name; }
 
  private:
-  std::shared_ptr<const VulkanDevice> device_;
-  const Scene& scene_;
   double h_;  // world units
   DiscreteTf tf_;
   PreintegrationTable table_;
-  GpuVolume volume_;
   GpuBuffer table_buffer_;
   // Lit: the shader and its gradients, the float shading the host's last
   // slabs use, the weighted tables (interpolated) and their copies on the device.

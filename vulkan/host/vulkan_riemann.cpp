@@ -28,10 +28,8 @@ struct Params {
 }  // namespace
 
 VulkanRiemann::VulkanRiemann(std::shared_ptr<const VulkanDevice> device, const Scene& scene)
-    : device_(std::move(device)),
-      scene_(scene),
+    : VulkanGridRenderer(std::move(device), scene),
       h_(scene.method.step * scene.grid().voxel_unit()),
-      volume_(device_, scene.grid()),
       tf_(device_, FloatTransferFunction(scene.transfer_function)),
       kernel_(device_, kSpirv, 6, sizeof(Params)) {
   if (!scene.lighting.enabled) return;
@@ -43,8 +41,6 @@ Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) 
   throw_if_cancelled(options);
   const GridVolume& volume = scene_.grid();
   const std::vector<float> rays = riemann_rays(camera, volume, h_, scene_.method.jitter, options.threads);
-  GpuBuffer ray_buffer(device_, rays.size() * sizeof(float));
-  ray_buffer.upload(std::as_bytes(std::span<const float>(rays)));
   Params p{grid_params(volume, volume_.type, scene_.method.fast.termination), static_cast<float>(h_), tf_.lo,
            tf_.scale, FloatTransferFunction::kBins, tf_.segments, 0, 0, 0, 0, 0, 0};
   if (shading_) {
@@ -53,9 +49,9 @@ Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) 
     p.shininess = shading_->shininess, p.flat = shading_->flat;
   }
   // Unlit, the volume stands in for the gradients the shader does not read.
-  const GpuBuffer* inputs[] = {&volume_.samples, &tf_.values, &tf_.bins, &ray_buffer,
+  const GpuBuffer* inputs[] = {&volume_.samples, &tf_.values, &tf_.bins, nullptr /* the rays */,
                                shading_ ? &shading_->gradients : &volume_.samples};
-  return run_pixels(device_, kernel_, camera.width(), camera.height(), inputs, p.grid, &p);
+  return run_pixels(device_, kernel_, camera.width(), camera.height(), inputs, rays, kRiemannRayFloats, p.grid, &p);
 }
 
 }  // namespace vri::vulkan

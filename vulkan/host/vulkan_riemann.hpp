@@ -9,23 +9,17 @@
 #include <optional>
 
 #include "compute_kernel.hpp"
-#include "gpu_scene_data.hpp"
-#include "vri/render/backend.hpp"
-#include "vri/scene/scene.hpp"
+#include "vulkan_grid_renderer.hpp"
 
 namespace vri::vulkan {
 
-class VulkanRiemann final : public GpuSceneRenderer {
+class VulkanRiemann final : public VulkanGridRenderer {
  public:
   VulkanRiemann(std::shared_ptr<const VulkanDevice> device, const Scene& scene);
   Image render(const Camera& camera, const RenderOptions& options) const override;
-  std::string device_name() const override { return "vulkan: " + device_->info().name; }
 
  private:
-  std::shared_ptr<const VulkanDevice> device_;
-  const Scene& scene_;
   double h_;  // world units
-  GpuVolume volume_;
   GpuTransferFunction tf_;
   std::optional<HeadlightShader> shader_;  // lit: the gradients
   std::optional<GpuShading> shading_;

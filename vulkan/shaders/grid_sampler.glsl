@@ -48,16 +48,22 @@ Cell grid_cell(DF u[3]) {
   return c;
 }
 
+// Trilinear in a cell's corner values c000, c100, c010, c110, c001, ... (x
+// fastest), in FloatSampler::interpolate's order; the gradient's components
+// (shading.glsl) use it too.
+float trilinear(float v0, float v1, float v2, float v3, float v4, float v5, float v6, float v7, vec3 f) {
+  precise float c00 = v0 + f.x * (v1 - v0);
+  precise float c10 = v2 + f.x * (v3 - v2);
+  precise float c01 = v4 + f.x * (v5 - v4);
+  precise float c11 = v6 + f.x * (v7 - v6);
+  precise float c0 = c00 + f.y * (c10 - c00);
+  precise float c1 = c01 + f.y * (c11 - c01);
+  precise float s = c0 + f.z * (c1 - c0);
+  return s;
+}
+
 float interpolate(Cell c) {
   const uint o = c.offset, y = p.sy, z = p.sz;
-  float v0 = voxel(o), v1 = voxel(o + 1u), v2 = voxel(o + y), v3 = voxel(o + y + 1u);
-  float v4 = voxel(o + z), v5 = voxel(o + z + 1u), v6 = voxel(o + z + y), v7 = voxel(o + z + y + 1u);
-  precise float c00 = v0 + c.f.x * (v1 - v0);
-  precise float c10 = v2 + c.f.x * (v3 - v2);
-  precise float c01 = v4 + c.f.x * (v5 - v4);
-  precise float c11 = v6 + c.f.x * (v7 - v6);
-  precise float c0 = c00 + c.f.y * (c10 - c00);
-  precise float c1 = c01 + c.f.y * (c11 - c01);
-  precise float s = c0 + c.f.z * (c1 - c0);
-  return s;
+  return trilinear(voxel(o), voxel(o + 1u), voxel(o + y), voxel(o + y + 1u), voxel(o + z), voxel(o + z + 1u),
+                   voxel(o + z + y), voxel(o + z + y + 1u), c.f);
 }

@@ -11,23 +11,15 @@ struct Terms {
 };
 
 vec3 gradient_at(Cell c) {
-  const uint o = 3u * c.offset, y = 3u * p.sy, z = 3u * p.sz;
-  vec3 out_g;
+  const uint y = 3u * p.sy, z = 3u * p.sz;
+  vec3 g;
   for (int a = 0; a < 3; ++a) {
-    const uint i = o + uint(a);
-    const float v0 = gradients.g[i], v1 = gradients.g[i + 3u], v2 = gradients.g[i + y], v3 = gradients.g[i + y + 3u];
-    const float v4 = gradients.g[i + z], v5 = gradients.g[i + z + 3u], v6 = gradients.g[i + z + y];
-    const float v7 = gradients.g[i + z + y + 3u];
-    precise float c00 = v0 + c.f.x * (v1 - v0);
-    precise float c10 = v2 + c.f.x * (v3 - v2);
-    precise float c01 = v4 + c.f.x * (v5 - v4);
-    precise float c11 = v6 + c.f.x * (v7 - v6);
-    precise float c0 = c00 + c.f.y * (c10 - c00);
-    precise float c1 = c01 + c.f.y * (c11 - c01);
-    precise float g = c0 + c.f.z * (c1 - c0);
-    out_g[a] = g;
+    const uint i = 3u * c.offset + uint(a);
+    g[a] = trilinear(gradients.g[i], gradients.g[i + 3u], gradients.g[i + y], gradients.g[i + y + 3u],
+                     gradients.g[i + z], gradients.g[i + z + 3u], gradients.g[i + z + y], gradients.g[i + z + y + 3u],
+                     c.f);
   }
-  return out_g;
+  return g;
 }
 
 // ln x for normal floats x (Cephes' logf, as log_pos on the CPU).
