@@ -18,6 +18,7 @@ TEST(VulkanDevice, ListsAUsableDeviceAndSharesIt) {
   const auto a = vulkan::VulkanDevice::shared(), b = vulkan::VulkanDevice::shared();
   EXPECT_EQ(a.get(), b.get());
   EXPECT_FALSE(a->info().name.empty());
+  EXPECT_TRUE(a->validating()) << "the tests run with the validation layer (validation_on.cpp)";
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }
 

@@ -46,6 +46,8 @@ class VulkanDevice {
   const Api& api() const { return api_; }
   VkDevice device() const { return device_; }
   const DeviceInfo& info() const { return info_; }
+  // Whether the validation layer watches this device (VRI_VULKAN_VALIDATION).
+  bool validating() const { return messenger_ != VK_NULL_HANDLE; }
   // A memory type with all of `required` among those `type_bits` allows
   // (preferring one that also has `preferred`); vri::Error if none.
   std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,
