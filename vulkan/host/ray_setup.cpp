@@ -16,32 +16,22 @@ namespace vri::vulkan {
 
 namespace {
 
-void put(float* out, double x) {  // x as hi + lo
+// x as the double-float hi + lo, hi at out[0] and lo at out[lo_at].
+void put(float* out, double x, int lo_at) {
   const float hi = static_cast<float>(x);
   out[0] = hi;
-  out[3] = static_cast<float>(x - static_cast<double>(hi));
-}
-
-void put_pair(float* out, double x) {
-  const float hi = static_cast<float>(x);
-  out[0] = hi;
-  out[1] = static_cast<float>(x - static_cast<double>(hi));
+  out[lo_at] = static_cast<float>(x - static_cast<double>(hi));
 }
 
 // f(y) for every row y of the image, on `threads` threads (0: every core).
 template <class Row>
 void for_rows(int height, int threads, const Row& row) {
-  const auto rows = [&] {
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);  // as render() does
+  arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, height, 8), [&](const tbb::blocked_range<int>& r) {
       for (int y = r.begin(); y < r.end(); ++y) row(y);
     });
-  };
-  if (threads > 0) {
-    tbb::task_arena arena(threads);
-    arena.execute(rows);
-  } else {
-    rows();
-  }
+  });
 }
 
 void put_direction(float* out, const Ray& ray) {
@@ -78,11 +68,11 @@ std::vector<float> riemann_rays(const Camera& camera, const GridVolume& volume, 
       if (n <= 0) continue;
       const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
       for (int a = 0; a < 3; ++a) {
-        put(r + a, u0[a]);
-        put(r + 6 + a, du[a]);
+        put(r + a, u0[a], 3);
+        put(r + 6 + a, du[a], 3);
       }
-      put_pair(r + 12, u);
-      put_pair(r + 14, h_last < h ? u * h_last / h : u);
+      put(r + 12, u, 1);
+      put(r + 14, h_last < h ? u * h_last / h : u, 1);
       r[16] = static_cast<float>(h_last);
       r[17] = count_bits(n);
       put_direction(r + 18, ray);
@@ -111,8 +101,8 @@ std::vector<float> preint1_rays(const Camera& camera, const GridVolume& volume, 
         const long long full = static_cast<long long>(std::floor(iv->length() / h));
         const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
         for (int a = 0; a < 3; ++a) {
-          put(r + a, u0[a]);
-          put(r + 6 + a, du[a]);
+          put(r + a, u0[a], 3);
+          put(r + 6 + a, du[a], 3);
         }
         r[12] = count_bits(full);
         put_direction(r + 17, ray);

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "integrators/ray_steps.hpp"  // world_step
 #include "pixel_kernel.hpp"
 #include "ray_setup.hpp"
 #include "vri/transfer/float_transfer_function.hpp"
@@ -29,7 +30,7 @@ struct Params {
 
 VulkanRiemann::VulkanRiemann(std::shared_ptr<const VulkanDevice> device, const Scene& scene)
     : VulkanGridRenderer(std::move(device), scene),
-      h_(scene.method.step * scene.grid().voxel_unit()),
+      h_(detail::world_step(scene.grid(), scene.method.step, "riemann")),
       tf_(device_, FloatTransferFunction(scene.transfer_function)),
       kernel_(device_, kSpirv, 6, sizeof(Params)) {
   if (!scene.lighting.enabled) return;
