@@ -11,7 +11,7 @@ namespace vri::vulkan {
 
 namespace {
 
-// Bytes rounded up to whole 32-bit words (a buffer the shader reads as uint[]).
+// Bytes rounded up to whole 32-bit words (an array the shader reads as uint[]).
 std::size_t word_bytes(std::size_t bytes) { return (bytes + 3) / 4 * 4; }
 
 int type_code(const GridVolume& volume) {
@@ -38,13 +38,14 @@ GpuVolume::GpuVolume(std::shared_ptr<const VulkanDevice> device, const GridVolum
 
 GpuShading::GpuShading(std::shared_ptr<const VulkanDevice> device, const Lighting& lighting,
                        const HeadlightShader& shader, const GridVolume& volume)
-    : gradients(std::move(device), 3 * sizeof(float) * volume.size(), "the gradient field (lighting)"),
+    : gradients(std::move(device),
+                std::as_bytes(std::span<const float>(shader.gradients().data(), 3 * volume.size())),
+                "the gradient field (lighting)"),
       ka(static_cast<float>(lighting.ambient)),
       kd(static_cast<float>(lighting.diffuse)),
       ks(static_cast<float>(lighting.specular)),
       shininess(static_cast<float>(lighting.shininess)),
       flat(static_cast<float>(shader.flat_threshold())) {
-  gradients.upload(std::as_bytes(std::span<const float>(shader.gradients().data(), 3 * volume.size())));
 }
 
 GpuTransferFunction::GpuTransferFunction(std::shared_ptr<const VulkanDevice> device, const FloatTransferFunction& tf)

@@ -5,6 +5,7 @@
 // (transfer_function.glsl).
 #include <memory>
 
+#include "gpu_array.hpp"
 #include "gpu_buffer.hpp"
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/float_transfer_function.hpp"
@@ -14,7 +15,7 @@ namespace vri::vulkan {
 
 struct GpuVolume {
   GpuVolume(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume);
-  GpuBuffer samples;
+  GpuArray samples;
   int type;  // grid_sampler.glsl's kUInt8, kUInt16, kInt16, kFloat32
 };
 
@@ -24,7 +25,7 @@ struct GpuVolume {
 struct GpuShading {
   GpuShading(std::shared_ptr<const VulkanDevice> device, const Lighting& lighting, const HeadlightShader& shader,
              const GridVolume& volume);
-  GpuBuffer gradients;
+  GpuArray gradients;
   float ka, kd, ks, shininess, flat;
 };
 

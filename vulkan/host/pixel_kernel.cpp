@@ -5,7 +5,7 @@
 
 namespace vri::vulkan {
 
-GridParams grid_params(const GridVolume& volume, int type, double termination) {
+GridParams grid_params(const VulkanDevice& device, const GridVolume& volume, int type, double termination) {
   GridParams g{};
   const auto& dims = volume.dims();
   g.sy = static_cast<std::uint32_t>(dims[0]);
@@ -16,6 +16,7 @@ GridParams grid_params(const GridVolume& volume, int type, double termination) {
     g.last_cell[a] = dims[a] - 2;
   }
   g.termination = static_cast<float>(termination);
+  g.part_shift = device.part_shift();
   return g;
 }
 

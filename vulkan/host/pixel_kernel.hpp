@@ -22,11 +22,12 @@ struct GridParams {
   std::uint32_t row_pixels;
   std::int32_t last_cell[3];
   float termination;
+  std::uint32_t part_shift;  // log2 of a GpuArray part's bytes (gpu_array.hpp)
 };
-static_assert(sizeof(GridParams) == 48 && offsetof(GridParams, top) == 16 && offsetof(GridParams, last_cell) == 32);
+static_assert(sizeof(GridParams) == 52 && offsetof(GridParams, top) == 16 && offsetof(GridParams, last_cell) == 32);
 
 // The volume's part of GridParams (the dispatch's part is set by run_pixels).
-GridParams grid_params(const GridVolume& volume, int type, double termination);
+GridParams grid_params(const VulkanDevice& device, const GridVolume& volume, int type, double termination);
 
 // Runs `kernel` over width x height pixels with `inputs` bound at 0 .. n-1
 // and the image at n; the null entry of `inputs` is where the rays go:

@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <string>
 
 #include "integrators/float_riemann.hpp"  // riemann_samples, jitter_fraction
+#include "vri/core/error.hpp"
 #include "vri/tables/slab_integral.hpp"
 #include "vri/volume/float_sampler.hpp"
 
@@ -82,34 +84,39 @@ std::vector<float> riemann_rays(const Camera& camera, const GridVolume& volume, 
   return out;
 }
 
-std::vector<float> preint1_rays(const Camera& camera, const GridVolume& volume, const DiscreteTf& tf,
-                                const detail::FloatLighting& lighting, double h, int threads) {
-  const int W = camera.width(), H = camera.height();
-  std::vector<float> out(static_cast<std::size_t>(W) * H * kPreint1RayFloats, 0.0f);
+std::vector<float> slab_rays(int steps, const Camera& camera, const GridVolume& volume, const DiscreteTf& tf,
+                             const detail::FloatLighting& lighting, double h, int threads) {
+  if (steps != 1 && steps != 2) throw Error("vulkan: slabs of 1 or 2 steps, not " + std::to_string(steps));
+  const int W = camera.width(), H = camera.height(), floats = slab_ray_floats(steps);
+  std::vector<float> out(static_cast<std::size_t>(W) * H * floats, 0.0f);
   const FloatSampler sampler(volume);
   volume.visit([&](auto values) {
     for_rows(H, threads, [&](int y) {
       for (int x = 0; x < W; ++x) {
-        float* r = out.data() + (static_cast<std::size_t>(y) * W + x) * kPreint1RayFloats;
+        float* r = out.data() + (static_cast<std::size_t>(y) * W + x) * floats;
         const Ray ray = camera.ray(x, y);
         const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
         if (!iv) {
           r[12] = count_bits(-1);
           continue;
         }
-        // As march_float and finish_float (float_march.hpp) with one step a slab.
-        const long long full = static_cast<long long>(std::floor(iv->length() / h));
+        // As march_float and finish_float (float_march.hpp).
+        const long long full = static_cast<long long>(std::floor(iv->length() / (steps * h)));
         const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
         for (int a = 0; a < 3; ++a) {
           put(r + a, u0[a], 3);
           put(r + 6 + a, du[a], 3);
         }
         r[12] = count_bits(full);
-        put_direction(r + 17, ray);
+        put_direction(r + 13 + 4 * steps, ray);
         const detail::FloatSample front = detail::sample_at(sampler, values.data(), lighting, detail::direction(ray),
-                                                            u0 + static_cast<double>(full) * du);
-        const Float4 v = detail::last_slabs<1>(sampler, values.data(), tf, lighting, ray, *iv, full, h, front)[0];
-        for (int c = 0; c < 4; ++c) r[13 + c] = v[c];
+                                                            u0 + static_cast<double>(full * steps) * du);
+        const auto put_slabs = [&](const auto& slabs) {
+          for (std::size_t i = 0; i < slabs.size(); ++i)
+            for (int c = 0; c < 4; ++c) r[13 + 4 * i + c] = slabs[i][c];
+        };
+        if (steps == 1) put_slabs(detail::last_slabs<1>(sampler, values.data(), tf, lighting, ray, *iv, full, h, front));
+        else put_slabs(detail::last_slabs<2>(sampler, values.data(), tf, lighting, ray, *iv, full, h, front));
       }
     });
   });

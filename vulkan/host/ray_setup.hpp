@@ -25,14 +25,15 @@ inline constexpr int kRiemannRayFloats = 21;
 std::vector<float> riemann_rays(const Camera& camera, const GridVolume& volume, double h,
                                 std::optional<std::uint64_t> jitter, int threads);
 
-// preint1's ray, 20 floats (vulkan/shaders/preint1.comp): u0 hi x3, lo x3;
-// du hi x3, lo x3; the number of whole slabs (int bits; -1: the ray misses
-// the volume); the partial last slab's (r, g, b, alpha), integrated exactly
-// and lit as on the CPU (last_slabs, src/integrators/float_march.hpp); the
-// direction in float.
-inline constexpr int kPreint1RayFloats = 20;
+// The ray of preint1 (steps 1) or preint2 (steps 2), slab_ray_floats(steps)
+// floats (vulkan/shaders/preint.comp): u0 hi x3, lo x3; du hi x3, lo x3; the
+// number of whole slabs (int bits; -1: the ray misses the volume); the
+// partial last slab's `steps` sub-slabs, each (r, g, b, alpha), integrated
+// exactly and lit as on the CPU (last_slabs, src/integrators/float_march.hpp);
+// the direction in float.
+constexpr int slab_ray_floats(int steps) { return 16 + 4 * steps; }
 
-std::vector<float> preint1_rays(const Camera& camera, const GridVolume& volume, const DiscreteTf& tf,
-                                const detail::FloatLighting& lighting, double h, int threads);
+std::vector<float> slab_rays(int steps, const Camera& camera, const GridVolume& volume, const DiscreteTf& tf,
+                             const detail::FloatLighting& lighting, double h, int threads);
 
 }  // namespace vri::vulkan

@@ -7,7 +7,7 @@
 #include "vri/render/backend.hpp"
 #include "vri/scene/scene.hpp"
 #include "vulkan_device.hpp"
-#include "vulkan_preint1.hpp"
+#include "vulkan_preint.hpp"
 #include "vulkan_riemann.hpp"
 
 namespace vri {
@@ -18,12 +18,12 @@ std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene)
   const std::string& m = scene.method.name;
   if (!std::holds_alternative<GridVolume>(scene.volume))
     throw Error("--backend vulkan: tetrahedral meshes are not on the GPU yet (docs/GPU.md); use --backend cpu");
-  if (m != "riemann" && m != "preint1")
-    throw Error("--backend vulkan: method '" + m + "' is not on the GPU yet; riemann and preint1 are (docs/GPU.md)");
+  if (m != "riemann" && m != "preint1" && m != "preint2")
+    throw Error("--backend vulkan: method '" + m + "' is not on the GPU yet; riemann, preint1 and preint2 are (docs/GPU.md)");
   if (!scene.method.fast.float_math)
     throw Error("--backend vulkan: the GPU computes in float; --double needs --backend cpu");
-  if (m == "preint1") return std::make_unique<vulkan::VulkanPreint1>(vulkan::VulkanDevice::shared(), scene);
-  return std::make_unique<vulkan::VulkanRiemann>(vulkan::VulkanDevice::shared(), scene);
+  if (m == "riemann") return std::make_unique<vulkan::VulkanRiemann>(vulkan::VulkanDevice::shared(), scene);
+  return std::make_unique<vulkan::VulkanPreint>(vulkan::VulkanDevice::shared(), scene);
 }
 
 std::vector<std::string> list_vulkan_devices() {

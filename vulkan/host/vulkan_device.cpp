@@ -1,6 +1,8 @@
 #include "vulkan_device.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
@@ -219,6 +221,14 @@ VulkanDevice::VulkanDevice() : api_(global_api()) {
     api_.vkGetPhysicalDeviceProperties(physical_, &p);
     max_groups_x_ = p.limits.maxComputeWorkGroupCount[0];
     max_storage_bytes_ = p.limits.maxStorageBufferRange;
+    // Tests pretend a smaller limit to run the split arrays and the chunked rays on small scenes.
+    if (const char* v = std::getenv("VRI_VULKAN_MAX_BUFFER_BYTES"); v && *v) {
+      char* end = nullptr;
+      const unsigned long long want = std::strtoull(v, &end, 10);
+      if (*end || want < 4096) throw Error(std::string("vulkan: VRI_VULKAN_MAX_BUFFER_BYTES=") + v + " is not a byte count >= 4096");
+      max_storage_bytes_ = std::min<std::uint64_t>(max_storage_bytes_, want);
+    }
+    part_shift_ = static_cast<std::uint32_t>(std::bit_width(std::min<std::uint64_t>(max_storage_bytes_, 1ull << 31)) - 1);
     api_.vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 
     const float priority = 1;

@@ -54,7 +54,12 @@ class VulkanDevice {
                             VkMemoryPropertyFlags preferred = 0) const;
   VkMemoryPropertyFlags memory_flags(std::uint32_t type) const { return memory_.memoryTypes[type].propertyFlags; }
   std::uint32_t max_workgroups_x() const { return max_groups_x_; }
+  // The largest storage buffer (maxStorageBufferRange, or less where
+  // VRI_VULKAN_MAX_BUFFER_BYTES says so).
   std::uint64_t max_storage_buffer_bytes() const { return max_storage_bytes_; }
+  // log2 of the bytes in each part of a GpuArray (gpu_array.hpp): the largest
+  // power of two a storage buffer holds, at most 2^31.
+  std::uint32_t part_shift() const { return part_shift_; }
 
   // Records commands with `record` into a one-time command buffer, submits
   // it and waits; one submission at a time (the queue is shared).
@@ -84,6 +89,7 @@ class VulkanDevice {
   VkPhysicalDeviceMemoryProperties memory_{};
   std::uint32_t queue_family_ = 0, max_groups_x_ = 0;
   std::uint64_t max_storage_bytes_ = 0;
+  std::uint32_t part_shift_ = 0;
   DeviceInfo info_;
   mutable std::mutex queue_mutex_;
 };

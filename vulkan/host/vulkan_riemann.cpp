@@ -32,7 +32,7 @@ VulkanRiemann::VulkanRiemann(std::shared_ptr<const VulkanDevice> device, const S
     : VulkanGridRenderer(std::move(device), scene),
       h_(detail::world_step(scene.grid(), scene.method.step, "riemann")),
       tf_(device_, FloatTransferFunction(scene.transfer_function)),
-      kernel_(device_, kSpirv, 6, sizeof(Params)) {
+      kernel_(device_, kSpirv, 2 * GpuArray::kParts + 4, sizeof(Params)) {
   if (!scene.lighting.enabled) return;
   shader_.emplace(scene.lighting, scene.grid());
   shading_.emplace(device_, scene.lighting, *shader_, scene.grid());
@@ -42,7 +42,7 @@ Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) 
   throw_if_cancelled(options);
   const GridVolume& volume = scene_.grid();
   const std::vector<float> rays = riemann_rays(camera, volume, h_, scene_.method.jitter, options.threads);
-  Params p{grid_params(volume, volume_.type, scene_.method.fast.termination), static_cast<float>(h_), tf_.lo,
+  Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination), static_cast<float>(h_), tf_.lo,
            tf_.scale, FloatTransferFunction::kBins, tf_.segments, 0, 0, 0, 0, 0, 0};
   if (shading_) {
     p.lit = 1;
@@ -50,9 +50,10 @@ Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) 
     p.shininess = shading_->shininess, p.flat = shading_->flat;
   }
   // Unlit, the volume stands in for the gradients the shader does not read.
-  const GpuBuffer* inputs[] = {&volume_.samples, &tf_.values, &tf_.bins, nullptr /* the rays */,
-                               shading_ ? &shading_->gradients : &volume_.samples};
-  return run_pixels(device_, kernel_, camera.width(), camera.height(), inputs, rays, kRiemannRayFloats, p.grid, &p);
+  Bindings b;
+  b.add(volume_.samples).add(shading_ ? shading_->gradients : volume_.samples);
+  b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */);
+  return run_pixels(device_, kernel_, camera.width(), camera.height(), b.list(), rays, kRiemannRayFloats, p.grid, &p);
 }
 
 }  // namespace vri::vulkan

@@ -9,7 +9,8 @@
   vec3 top;           /* dims - 1 per axis */                                  \
   uint row_pixels;    /* invocations per dispatch row (groups in x * 64) */    \
   ivec3 last_cell;    /* dims - 2 per axis */                                  \
-  float termination;  /* transmittance threshold, 0: off */
+  float termination;  /* transmittance threshold, 0: off */                \
+  uint part_shift;    /* log2 of a GpuArray part's bytes (split_array.glsl) */
 
 // This invocation's pixel, or a value >= p.pixels past the image's end.
 #define PIXEL_INDEX() (gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * p.row_pixels)

@@ -4,7 +4,7 @@
 // converted to float exactly and interpolated in the same order. The samples
 // stay in their stored type, packed in 32-bit words (uint8 four to a word,
 // 16-bit two): a 256^3 uint8 volume takes 16 MiB on the GPU, not 64.
-// Needs before it: buffer Volume { uint words[]; } volume; and the
+// Needs before it: SPLIT_INPUT(uint, volume, ...) (split_array.glsl) and the
 // push-constant block `p` with the volume's layout (grid.type, sy, sz, top,
 // last_cell).
 
@@ -13,10 +13,10 @@ const int kUInt8 = 0, kUInt16 = 1, kInt16 = 2, kFloat32 = 3;
 
 float voxel(uint i) {
   switch (p.type) {
-    case kUInt8: return float((volume.words[i >> 2] >> ((i & 3u) * 8u)) & 0xffu);
-    case kUInt16: return float((volume.words[i >> 1] >> ((i & 1u) * 16u)) & 0xffffu);
-    case kInt16: return float(bitfieldExtract(int(volume.words[i >> 1]), int((i & 1u) * 16u), 16));
-    default: return uintBitsToFloat(volume.words[i]);
+    case kUInt8: return float((volume_at(i >> 2) >> ((i & 3u) * 8u)) & 0xffu);
+    case kUInt16: return float((volume_at(i >> 1) >> ((i & 1u) * 16u)) & 0xffffu);
+    case kInt16: return float(bitfieldExtract(int(volume_at(i >> 1)), int((i & 1u) * 16u), 16));
+    default: return uintBitsToFloat(volume_at(i));
   }
 }
 

@@ -21,15 +21,16 @@ layout(push_constant) uniform Params {
   float ka, kd, ks, shininess, flat_threshold;
 } p;
 
-layout(std430, binding = 0) readonly buffer Volume { uint words[]; } volume;
-layout(std430, binding = 1) readonly buffer Tf { float v[]; } tf;
-layout(std430, binding = 2) readonly buffer TfBins { int first[]; } bins;
-// Per ray (ray_setup.hpp, RiemannRay): u0 (hi x3, lo x3), du (hi x3, lo x3),
-// o (hi, lo), o of the last step (hi, lo), h_k of the last step, sample
-// count, the direction (x, y, z).
-layout(std430, binding = 3) readonly buffer Rays { float r[]; } rays;
-layout(std430, binding = 4) readonly buffer Gradients { float g[]; } gradients;  // lit only
-layout(std430, binding = 5) writeonly buffer Image { vec4 px[]; } image;
+#include "split_array.glsl"
+SPLIT_INPUT(uint, volume, 0, 2u)
+SPLIT_INPUT(float, gradients, 4, 2u)  // lit only
+layout(std430, binding = 8) readonly buffer Tf { float v[]; } tf;
+layout(std430, binding = 9) readonly buffer TfBins { int first[]; } bins;
+// Per ray (ray_setup.hpp, kRiemannRayFloats): u0 (hi x3, lo x3), du (hi x3,
+// lo x3), o (hi, lo), o of the last step (hi, lo), h_k of the last step,
+// sample count, the direction (x, y, z).
+layout(std430, binding = 10) readonly buffer Rays { float r[]; } rays;
+layout(std430, binding = 11) writeonly buffer Image { vec4 px[]; } image;
 
 #include "double_float.glsl"
 #include "exp_neg.glsl"

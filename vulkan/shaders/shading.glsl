@@ -3,7 +3,7 @@
 // trilinearly from the host's gradient field in the sample's cell, and
 // c_lit = c a + b with a = ka + kd x, b = ks x^p, x = |N . d|; x^p as
 // exp(p ln x) by the CPU's own polynomials (float_math.hpp). Needs before
-// it: buffer Gradients { float g[]; } gradients (three floats a grid point),
+// it: SPLIT_INPUT(float, gradients, ...) (three floats a grid point),
 // exp_neg.glsl, and in `p`: ka, kd, ks, shininess, flat_threshold.
 
 struct Terms {
@@ -15,8 +15,8 @@ vec3 gradient_at(Cell c) {
   vec3 g;
   for (int a = 0; a < 3; ++a) {
     const uint i = 3u * c.offset + uint(a);
-    g[a] = trilinear(gradients.g[i], gradients.g[i + 3u], gradients.g[i + y], gradients.g[i + y + 3u],
-                     gradients.g[i + z], gradients.g[i + z + 3u], gradients.g[i + z + y], gradients.g[i + z + y + 3u],
+    g[a] = trilinear(gradients_at(i), gradients_at(i + 3u), gradients_at(i + y), gradients_at(i + y + 3u),
+                     gradients_at(i + z), gradients_at(i + z + 3u), gradients_at(i + z + y), gradients_at(i + z + y + 3u),
                      c.f);
   }
   return g;

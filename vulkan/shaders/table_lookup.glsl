@@ -1,11 +1,13 @@
-// preint1's table lookup in float, as FloatAxis and FloatLookup
-// (include/vri/tables/float_lookup.hpp): a scalar's place on the table axis
-// (entry i, weight w of entry i + 1), then the four entries around
-// (s_f, s_b) blended bilinearly in the same order; `which` names the table
-// of that layout to read (entry_of: the table itself, or a weighted table of
-// interpolated lighting). Needs before it: vec4 entry_of(int which, int e)
-// over tables of n x n entries (front scalar major) and, in `p`: table_n,
-// table_lo, table_scale.
+// The pre-integration tables' lookups in float, as FloatAxis, FloatLookup
+// and SecondOrderFloatLookup (include/vri/tables/float_lookup.hpp,
+// second_order_float_lookup.hpp): a scalar's place on the table axis (entry
+// i, weight w of entry i + 1), then the entries around it blended in the
+// same order: preint1's four around (s_f, s_b) bilinearly, preint2's eight
+// around (s_f, s_m, s_b) trilinearly, along s_b, then s_m, then s_f. `which`
+// names the table of that layout to read (entry_of: the table itself, or a
+// weighted table of interpolated lighting). Needs before it:
+// vec4 entry_of(int which, uint e) over tables of n^2 or n^3 entries (front
+// scalar major) and, in `p`: table_n, table_lo, table_scale.
 
 struct Place {
   int i;
@@ -19,12 +21,27 @@ Place place(float s) {
   return Place(i, w);
 }
 
+// Entries e and e + 1 blended by w (along the back scalar).
+vec4 along(int which, uint e, float w) {
+  const vec4 lo = entry_of(which, e), hi = entry_of(which, e + 1u);
+  precise vec4 v = lo + w * (hi - lo);
+  return v;
+}
+
 vec4 blend(int which, Place f, Place b) {
-  const int e = f.i * p.table_n + b.i;
-  const vec4 e00 = entry_of(which, e), e01 = entry_of(which, e + 1), e10 = entry_of(which, e + p.table_n);
-  const vec4 e11 = entry_of(which, e + p.table_n + 1);
-  precise vec4 front = e00 + b.w * (e01 - e00);
-  precise vec4 back = e10 + b.w * (e11 - e10);
+  const uint n = uint(p.table_n), e = uint(f.i) * n + uint(b.i);
+  const vec4 front = along(which, e, b.w), back = along(which, e + n, b.w);
   precise vec4 v = front + f.w * (back - front);
+  return v;
+}
+
+vec4 blend(int which, Place f, Place m, Place b) {
+  const uint n = uint(p.table_n), row = n, plane = n * n;
+  const uint e = uint(f.i) * plane + uint(m.i) * row + uint(b.i);
+  const vec4 c00 = along(which, e, b.w), c01 = along(which, e + row, b.w);
+  const vec4 c10 = along(which, e + plane, b.w), c11 = along(which, e + plane + row, b.w);
+  precise vec4 c0 = c00 + m.w * (c01 - c00);
+  precise vec4 c1 = c10 + m.w * (c11 - c10);
+  precise vec4 v = c0 + f.w * (c1 - c0);
   return v;
 }

@@ -1,0 +1,91 @@
+// Arrays larger than one storage buffer (vulkan/host/gpu_array.hpp,
+// shaders/split_array.glsl): this program pretends the device's largest
+// storage buffer is 256 KiB (VRI_VULKAN_MAX_BUFFER_BYTES, set before the
+// device is made), so small scenes split their volume, tables and gradient
+// field into up to four parts, and the rays into chunks, as a 256^3 scene
+// does on lavapipe (128 MiB). The images must still match the CPU float path
+// (on lavapipe: to the byte), with the validation layer on.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "gpu_against_cpu.hpp"
+#include "gpu_array.hpp"
+#include "test_support.hpp"
+#include "vri/core/error.hpp"
+#include "vri/scene/scene.hpp"
+#include "vulkan_device.hpp"
+
+namespace vri {
+namespace {
+
+constexpr std::size_t kPart = 256 * 1024;
+const bool kSmallBuffers = setenv("VRI_VULKAN_MAX_BUFFER_BYTES", std::to_string(kPart).c_str(), 1) == 0;
+
+TEST(GpuArray, SplitsIntoPartsAndReadsBack) {
+  ASSERT_TRUE(kSmallBuffers);
+  const auto device = vulkan::VulkanDevice::shared();
+  ASSERT_EQ(device->max_storage_buffer_bytes(), kPart);
+  ASSERT_EQ(std::size_t{1} << device->part_shift(), kPart);
+  std::vector<std::byte> data(3 * kPart + 1000);
+  for (std::size_t i = 0; i < data.size(); ++i) data[i] = std::byte((i * 2654435761u) >> 13);
+  const vulkan::GpuArray array(device, data, "the test array");
+  const auto parts = array.bindings();
+  for (int k = 0; k < 4; ++k) ASSERT_NE(parts[k], nullptr);
+  EXPECT_NE(parts[2], parts[3]) << "four parts";
+  EXPECT_EQ(parts[3]->size(), 1000u) << "the last part holds the rest";
+  std::vector<std::byte> back(data.size());
+  array.download(back);
+  EXPECT_EQ(back, data);
+
+  const vulkan::GpuArray small(device, std::vector<std::byte>(100, std::byte{7}), "a small array");
+  for (const vulkan::GpuBuffer* b : small.bindings()) EXPECT_EQ(b, small.bindings()[0]) << "one part, repeated";
+
+  try {
+    vulkan::GpuArray too_big(device, 4 * kPart + 16, "the huge table");
+    ADD_FAILURE() << "five parts accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the huge table"), std::string::npos) << e.what();
+  }
+}
+
+Scene with(Scene scene, const char* method, int table_size, int width, int height) {
+  scene.method.name = method;
+  scene.method.step = 0.7;
+  scene.method.table_size = table_size;
+  scene.camera.width = width;
+  scene.camera.height = height;
+  return scene;
+}
+
+// A float volume of 41^3 (three parts), preint1's 256^2 table (four parts),
+// preint2's 40^3 (four), and 96 x 80 rays of up to 96 bytes (three chunks).
+TEST(SplitArrays, UnlitScenesMatchTheCpu) {
+  const Scene scene = parse_scene(R"({"volume": {"builtin": "marschner_lobb", "dims": [41, 41, 41]},
+    "transfer_function": {"points": [[0, 0, 0, 0, 0], [0.3, 0.2, 0.5, 1, 0.05], [0.6, 1, 0.8, 0.2, 0.2],
+                                     [0.61, 1, 0.2, 0.1, 3], [0.62, 1, 0.8, 0.2, 0.2], [1, 1, 1, 1, 0.4]]},
+    "camera": {"eye": [95, 82, 116], "target": [20, 20, 20], "up": [0, 0, 1], "fov_y": 30}})",
+                                  test::source_path("scenes"));
+  EXPECT_LE(test::gpu_against_cpu(with(scene, "riemann", 256, 96, 80)).max, 1e-4);
+  EXPECT_LE(test::gpu_against_cpu(with(scene, "preint1", 256, 96, 80)).max, 1e-4);
+  EXPECT_LE(test::gpu_against_cpu(with(scene, "preint2", 40, 96, 80)).max, 1e-4);
+  EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
+}
+
+// The lit Marschner-Lobb scene: its gradient field (41^3 x 12 bytes) in four
+// parts, preint2's three weighted 40^3 tables in four each.
+TEST(SplitArrays, LitScenesMatchTheCpu) {
+  Scene scene = load_scene(test::source_path("scenes/marschner_lobb_lit.json"));
+  for (const char* mode : {"sampled", "interpolated"}) {
+    scene.lighting.mode = mode;
+    EXPECT_LE(test::gpu_against_cpu(with(scene, "riemann", 256, 48, 40)).max, 1e-4) << mode;
+    EXPECT_LE(test::gpu_against_cpu(with(scene, "preint1", 128, 48, 40)).max, 1e-4) << mode;
+    EXPECT_LE(test::gpu_against_cpu(with(scene, "preint2", 40, 48, 40)).max, 1e-4) << mode;
+  }
+  EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
+}
+
+}  // namespace
+}  // namespace vri

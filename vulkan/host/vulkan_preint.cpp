@@ -1,0 +1,115 @@
+#include "vulkan_preint.hpp"
+
+#include <cstdint>
+
+#include "integrators/float_shading.hpp"
+#include "integrators/ray_steps.hpp"  // world_step
+#include "pixel_kernel.hpp"
+#include "ray_setup.hpp"
+#include "vri/core/error.hpp"
+#include "vri/integrators/preint2.hpp"  // second_order_builder_name
+#include "vri/tables/table_builder.hpp"
+
+namespace vri::vulkan {
+
+namespace {
+
+const std::uint32_t kPreint1Spirv[] = {
+#include "preint1.spv.inc"
+};
+const std::uint32_t kPreint2Spirv[] = {
+#include "preint2.spv.inc"
+};
+
+// preint.comp's push constants.
+struct Params {
+  GridParams grid;
+  std::int32_t table_n;
+  float table_lo, table_scale;
+  std::int32_t lit;  // 0 unlit, 1 sampled, 2 interpolated
+  float ka, kd, ks, shininess, flat;
+};
+
+// The bindings of preint.comp: the volume, three tables, the gradients (four each), the rays, the image.
+constexpr int kBindings = 5 * GpuArray::kParts + 2;
+
+std::span<const std::byte> bytes_of(const float* data, std::size_t floats) {
+  return std::as_bytes(std::span<const float>(data, floats));
+}
+
+}  // namespace
+
+VulkanPreint::VulkanPreint(std::shared_ptr<const VulkanDevice> device, const Scene& scene)
+    : VulkanGridRenderer(std::move(device), scene),
+      steps_(scene.method.name == "preint2" ? 2 : 1),
+      h_(detail::world_step(scene.grid(), scene.method.step, scene.method.name.c_str())),
+      tf_(scene.transfer_function, scene.method.table_size),
+      sampler_(scene.grid()),
+      kernel_(device_, steps_ == 1 ? std::span<const std::uint32_t>(kPreint1Spirv) : kPreint2Spirv, kBindings,
+              sizeof(Params)) {
+  const Lighting& lighting = scene.lighting;
+  if (lighting.enabled && lighting.mode != "sampled" && lighting.mode != "interpolated")
+    throw Error(scene.method.name + ": lighting mode must be sampled or interpolated, got '" + lighting.mode + "'");
+  const bool interpolated = lighting.enabled && lighting.mode == "interpolated";
+  // The tables as the CPU integrators build them (preint1.cpp, preint2.cpp).
+  std::size_t floats = 0;
+  if (steps_ == 1) {
+    if (interpolated) {
+      weighted1_.emplace(build_weighted_tables(tf_, h_));
+      tables_ = {weighted1_->front.data().data(), weighted1_->back.data().data(), nullptr};
+      floats = weighted1_->front.data().size();
+      axis_.emplace(weighted1_->front.axis());
+    } else {
+      table1_.emplace(make_table_builder(scene.method.builder)->build(tf_, h_));
+      tables_ = {table1_->data().data(), nullptr, nullptr};
+      floats = table1_->data().size();
+      axis_.emplace(table1_->axis());
+    }
+  } else {
+    const auto make = make_second_order_builder(second_order_builder_name(scene.method.builder));
+    if (interpolated) {
+      weighted2_.emplace(make->build_weighted(tf_, 2 * h_, scene.method.iterations));
+      tables_ = {weighted2_->full.data(), weighted2_->middle.data(), weighted2_->back.data()};
+      floats = weighted2_->full.bytes() / sizeof(float);
+      axis_.emplace(weighted2_->full.axis());
+    } else {
+      table2_.emplace(make->build(tf_, 2 * h_, scene.method.iterations));
+      tables_ = {table2_->data(), nullptr, nullptr};
+      floats = table2_->bytes() / sizeof(float);
+      axis_.emplace(table2_->axis());
+    }
+  }
+  const char* names[] = {"the pre-integration table", "a weighted table (lighting)", "a weighted table (lighting)"};
+  for (int k = 0; k < 3; ++k)
+    if (tables_[k]) on_device_[k].emplace(device_, bytes_of(tables_[k], floats), names[k]);
+  lighting_.weighted = interpolated ? tables_ : std::array<const float*, 3>{};
+  if (!lighting.enabled) return;
+  shader_.emplace(lighting, scene.grid());
+  shading_.emplace(device_, lighting, *shader_, scene.grid());
+  float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, sampler_);
+  lighting_.shading = float_shading_.get();
+}
+
+VulkanPreint::~VulkanPreint() = default;
+
+Image VulkanPreint::render(const Camera& camera, const RenderOptions& options) const {
+  throw_if_cancelled(options);
+  const GridVolume& volume = scene_.grid();
+  const std::vector<float> rays = slab_rays(steps_, camera, volume, tf_, lighting_, h_, options.threads);
+  Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
+           axis_->size(), axis_->lo(), axis_->scale(), 0, 0, 0, 0, 0, 0};
+  if (shading_) {
+    p.lit = lighting_.interpolated() ? 2 : 1;
+    p.ka = shading_->ka, p.kd = shading_->kd, p.ks = shading_->ks;
+    p.shininess = shading_->shininess, p.flat = shading_->flat;
+  }
+  // Where a mode does not read an array, the volume stands in for it.
+  const auto or_volume = [&](const std::optional<GpuArray>& a) -> const GpuArray& { return a ? *a : volume_.samples; };
+  Bindings b;
+  b.add(volume_.samples).add(or_volume(on_device_[0])).add(or_volume(on_device_[1])).add(or_volume(on_device_[2]));
+  b.add(shading_ ? shading_->gradients : volume_.samples).add(nullptr /* the rays */);
+  return run_pixels(device_, kernel_, camera.width(), camera.height(), b.list(), rays, slab_ray_floats(steps_),
+                    p.grid, &p);
+}
+
+}  // namespace vri::vulkan
