@@ -108,7 +108,7 @@ def trace(scene: SceneLike, pixel: Tuple[int, int], *, method: Optional[str] = N
 def table(tf: TransferFunctionLike, *, size: int = 256, order: int = 1, length: float = 1.0,
           lengths: Optional[int] = None, max_length: Optional[float] = None, builder: Optional[str] = None,
           iterations: Optional[int] = None, steps: int = 0,
-          accumulation: str = "fp32") -> npt.NDArray[np.float32]:
+          accumulation: str = "fp32", backend: str = "cpu") -> npt.NDArray[np.float32]:
     """A pre-integration table as `vri table` writes it (SPEC §10)."""
 
 class ChannelDifference:

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # gpu_bench.sh [BUILD_DIR] [REPEATS]: the GPU figures of docs/GPU.md (issue
-# 22, item 6): frame time of `preint1` and `riemann` (step 1, 512 x 512) on
-# neghip and bonsai with --backend vulkan beside --backend cpu (2 threads) in
-# the same run, the fastest of REPEATS renders as `vri render` reports them
-# (the render alone: rays set up, the dispatch, the image read back; not the
-# volume upload or the table build), and whether the two images are within
-# 1e-4. Prints the machine and the Vulkan device first: on a machine without
-# a GPU that device is lavapipe, Mesa's CPU emulation, and its times are
-# labelled so.
+# 22, item 6), --backend vulkan beside --backend cpu (2 threads) in the same
+# run: the frame time of `preint1`, `preint2` and `riemann` (step 1, 512 x
+# 512) on neghip and bonsai, the fastest of REPEATS renders as `vri render`
+# reports them (the render alone: rays set up, the dispatch, the image read
+# back; not the volume upload or the table build), with the largest
+# difference between the two images; then the build time of the 256²
+# sliced and 256³ second-order tables as `vri table` reports it (on the GPU:
+# the transfer function up, the dispatch, the table back). Prints the
+# machine and the Vulkan device first: on a machine without a GPU that
+# device is lavapipe, Mesa's CPU emulation, and its times are labelled so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
@@ -32,7 +34,7 @@ echo
 echo "| scene | method | CPU ms (2 threads) | Vulkan ms ($label) | CPU / Vulkan | max difference |"
 echo "|---|---|---|---|---|---|"
 for scene in neghip bonsai; do
-  for method in preint1 riemann; do
+  for method in preint1 preint2 riemann; do
     args=(scenes/$scene.json --method "$method" --step 1 --width 512 --height 512)
     cpu=$(best "${args[@]}" -o "$tmp/cpu.npy" --threads 2)
     gpu=$(best "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
@@ -41,5 +43,26 @@ for scene in neghip bonsai; do
       'BEGIN { printf "| %s | %s | %.1f | %.1f | %.2f | %s |\n", s, m, 1000 * c, 1000 * g, c / g, d }'
   done
 done
+# The fastest build time of `vri table ARGS` over the repeats (as `vri table` reports it).
+best_table() {
+  local t best=
+  for _ in $(seq "$repeats"); do
+    t=$("$vri" table "$@" 2>&1 >/dev/null | sed -n "s/.* in \([0-9.e-]*\) s ->.*/\1/p")
+    best=$(awk -v a="$t" -v b="${best:-$t}" 'BEGIN { print (a < b ? a : b) }')
+  done
+  echo "$best"
+}
 echo
-echo "Table builds on the GPU (256^3 second-order table): not on the GPU yet (issue 22, item 3)."
+echo "| table (bonsai's transfer function) | CPU s (2 threads) | Vulkan s ($label) | CPU / Vulkan | max difference |"
+echo "|---|---|---|---|---|"
+for spec in "first order 256², sliced (Roettger & Ertl)|--size 256 --builder sliced" \
+            "second order 256³, fast (El Hajjar et al.)|--size 256 --order 2 --builder fast"; do
+  name=${spec%%|*}
+  read -r -a args <<< "${spec#*|}"
+  args=(--tf presets/bonsai.json "${args[@]}")
+  cpu=$(best_table "${args[@]}" -o "$tmp/cpu.npy")
+  gpu=$(best_table "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
+  diff=$(/usr/bin/python3 -c "import numpy as n; print('%.1e' % abs(n.load('$tmp/cpu.npy').astype(float) - n.load('$tmp/gpu.npy')).max())")
+  awk -v s="$name" -v c="$cpu" -v g="$gpu" -v d="$diff" \
+    'BEGIN { printf "| %s | %.3f | %.3f | %.2f | %s |\n", s, c, g, c / g, d }'
+done

@@ -18,10 +18,10 @@ namespace {
 
 py::array_t<float> table(const py::object& tf_object, int size, int order, double length, std::optional<int> lengths,
                          std::optional<double> max_length, std::optional<std::string> builder,
-                         std::optional<int> iterations, int steps, std::string accumulation) {
+                         std::optional<int> iterations, int steps, std::string accumulation, std::string backend) {
   const TransferFunction tf = transfer_function_of(tf_object);
-  const TableRequest request{size, order, length, lengths, max_length, std::move(builder), iterations, steps,
-                             std::move(accumulation)};
+  const TableRequest request{size,  order, length, lengths, max_length, std::move(builder), iterations, steps,
+                             std::move(accumulation), std::move(backend)};
   BuiltTable built;
   {
     py::gil_scoped_release release;
@@ -89,13 +89,14 @@ void bind_analysis(py::module_& m) {
   m.def("table", &table, py::arg("tf"), py::kw_only(), py::arg("size") = 256, py::arg("order") = 1,
         py::arg("length") = 1.0, py::arg("lengths") = py::none(), py::arg("max_length") = py::none(),
         py::arg("builder") = py::none(), py::arg("iterations") = py::none(), py::arg("steps") = 0,
-        py::arg("accumulation") = "fp32",
+        py::arg("accumulation") = "fp32", py::arg("backend") = "cpu",
         "A pre-integration table as `vri table` writes it (SPEC §10), float32 premultiplied RGBA:\n"
         "order 1 (N, N, 4) indexed [s_f, s_b]; with lengths=M and max_length (M, N, N, 4) indexed\n"
         "[l, s_f, s_b]; order 2 (N, N, N, 4) indexed [s_f, s_m, s_b]. Entry i stands for\n"
         "s_lo + i (s_hi - s_lo) / (N - 1) over the control points' span. tf: a dict ({\"points\":\n"
         "[[s, r, g, b, tau], ...]}), a transfer-function file or a vri.Scene. builder: order 1\n"
-        "brute, incremental (default), sliced, engel or exact; order 2 plain, fast (default) or exact.");
+        "brute, incremental (default), sliced, engel or exact; order 2 plain, fast (default) or exact.\n"
+        "backend='vulkan' builds on the GPU: order 1 sliced (the default there, fp32), order 2 fast.");
   py::class_<ChannelDifference>(m, "ChannelDifference", "One channel of vri.compare.")
       .def_readonly("share_over", &ChannelDifference::share_over, "share of pixels with |a - b| > tolerance")
       .def_readonly("rms", &ChannelDifference::rms)

@@ -58,3 +58,20 @@ def test_camera_keywords_equal_the_cli_flags(root, cli_render, keywords, flags):
     assert image.tobytes() == expected.tobytes()
     plain = vri.render(vri.load_scene(scene), method="preint1", **SMALL)
     assert image.tobytes() != plain.tobytes()
+
+
+@gpu
+def test_tables_built_on_the_gpu_match_the_cpu(root):
+    tf = root / "presets" / "neghip_spike.json"
+    cpu = vri.table(tf, size=96, builder="sliced", length=2.0)
+    gpu = vri.table(tf, size=96, length=2.0, backend="vulkan")  # sliced is the GPU's default
+    assert gpu.shape == cpu.shape == (96, 96, 4)
+    assert np.abs(gpu - cpu).max() <= 1e-5
+    assert cpu[..., 3].max() > 0.5
+    cpu2 = vri.table(tf, size=32, order=2, length=2.0)
+    gpu2 = vri.table(tf, size=32, order=2, length=2.0, backend="vulkan")
+    assert np.abs(gpu2 - cpu2).max() <= 1e-6
+    with pytest.raises(ValueError, match="not on the GPU; sliced"):
+        vri.table(tf, size=32, builder="incremental", backend="vulkan")
+    with pytest.raises(ValueError, match="builds in fp32"):
+        vri.table(tf, size=32, accumulation="8bit", backend="vulkan")

@@ -2,6 +2,7 @@
 //   [--lengths M --max-length LMAX] [--builder NAME] -o TABLE.npy   (SPEC §10)
 //   [--steps K] [--accumulation 8bit|12bit|fp16|fp32]               (sliced only)
 //   [--iterations K]                                                (order 2 only)
+//   [--backend cpu|vulkan]                                          (SPEC §11; docs/GPU.md)
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -50,6 +51,8 @@ Runner add_table_command(CLI::App& app) {
   cmd->add_option("--iterations", args->request.iterations, "order 2: chords per slab K, 1..4096 (default 8)");
   cmd->add_option("--steps", args->request.steps, "sliced: integration steps (default 2N)");
   cmd->add_option("--accumulation", args->request.accumulation, "sliced: 8bit, 12bit, fp16 or fp32 (default fp32)");
+  cmd->add_option("--backend", args->request.backend,
+                  "cpu (default) or vulkan: build on the GPU (order 1: sliced, fp32; order 2: fast)");
   cmd->add_option("-o,--output", args->output, "Output table (.npy)")->required();
   return [args] { return run_table(*args); };
 }

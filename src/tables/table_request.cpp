@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "vri/core/error.hpp"
+#include "vri/render/backend.hpp"
 #include "vri/tables/second_order_table.hpp"
 #include "vri/tables/sliced_builder.hpp"
 #include "vri/tables/table_builder.hpp"
@@ -16,15 +17,24 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Whether the table is built on the GPU (`backend`); vri::Error unless cpu or vulkan.
+bool gpu(const TableRequest& r) { return parse_backend(r.backend) == Backend::Vulkan; }
+
+template <class Builder>
+std::string builder_name(const Builder& builder, const TableRequest& r) {
+  return std::string(builder.name()) + (gpu(r) ? " (vulkan)" : "");
+}
+
 BuiltTable second_order(const TransferFunction& tf, const TableRequest& r) {
   if (r.lengths || r.max_length) throw Error("--lengths and --max-length are for --order 1");
   const DiscreteTf discrete(tf, r.size);
-  const auto builder = make_second_order_builder(r.builder.value_or("fast"));
+  const std::string name = r.builder.value_or("fast");
+  const auto builder = gpu(r) ? make_vulkan_second_order_builder(name) : make_second_order_builder(name);
   const auto start = std::chrono::steady_clock::now();
   auto table = std::make_shared<const SecondOrderTable>(builder->build(discrete, r.length, r.iterations.value_or(kDefaultSecondOrderIterations)));
   const double seconds = seconds_since(start);
   const std::size_t n = r.size;
-  return {{n, n, n, 4}, {table->data(), table->bytes() / sizeof(float)}, table, std::string(builder->name()), seconds};
+  return {{n, n, n, 4}, {table->data(), table->bytes() / sizeof(float)}, table, builder_name(*builder, r), seconds};
 }
 
 }  // namespace
@@ -35,10 +45,13 @@ BuiltTable build_table(const TransferFunction& tf, const TableRequest& r) {
   if (r.iterations) throw Error("--iterations is for --order 2");
   if (r.lengths.has_value() != r.max_length.has_value()) throw Error("--lengths and --max-length go together");
   const DiscreteTf discrete(tf, r.size);
-  const std::string name = r.builder.value_or("incremental");
+  const std::string name = r.builder.value_or(gpu(r) ? "sliced" : "incremental");
+  if (gpu(r) && parse_accumulation(r.accumulation) != Accumulation::Single)
+    throw Error("--backend vulkan builds in fp32; --accumulation " + r.accumulation + " simulates a frame buffer on the CPU");
   const std::unique_ptr<TableBuilder> builder =
-      name == "sliced" ? std::make_unique<SlicedBuilder>(r.steps, parse_accumulation(r.accumulation))
-                       : make_table_builder(name);
+      gpu(r)            ? make_vulkan_table_builder(name, r.steps)
+      : name == "sliced" ? std::make_unique<SlicedBuilder>(r.steps, parse_accumulation(r.accumulation))
+                         : make_table_builder(name);
   const std::size_t n = r.size;
   const auto start = std::chrono::steady_clock::now();
   BuiltTable out;
@@ -55,7 +68,7 @@ BuiltTable build_table(const TransferFunction& tf, const TableRequest& r) {
     out.owner = table;
   }
   out.seconds = seconds_since(start);
-  out.builder = builder->name();
+  out.builder = builder_name(*builder, r);
   return out;
 }
 

@@ -3,10 +3,13 @@
 // storage buffer is 256 KiB (VRI_VULKAN_MAX_BUFFER_BYTES, set before the
 // device is made), so small scenes split their volume, tables and gradient
 // field into up to four parts, and the rays into chunks, as a 256^3 scene
-// does on lavapipe (128 MiB). The images must still match the CPU float path
-// (on lavapipe: to the byte), with the validation layer on.
+// does on lavapipe (128 MiB), and the tables built on the GPU are written
+// into parts. The images must still match the CPU float path (on lavapipe:
+// to the byte) and the tables the CPU's, with the validation layer on.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -15,7 +18,10 @@
 #include "gpu_array.hpp"
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
+#include "vri/render/backend.hpp"
 #include "vri/scene/scene.hpp"
+#include "vri/tables/second_order_table.hpp"
+#include "vri/tables/sliced_builder.hpp"
 #include "vulkan_device.hpp"
 
 namespace vri {
@@ -84,6 +90,24 @@ TEST(SplitArrays, LitScenesMatchTheCpu) {
     EXPECT_LE(test::gpu_against_cpu(with(scene, "preint1", 128, 48, 40)).max, 1e-4) << mode;
     EXPECT_LE(test::gpu_against_cpu(with(scene, "preint2", 40, 48, 40)).max, 1e-4) << mode;
   }
+  EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
+}
+
+// Tables written into split arrays: a 200^2 first-order table (three
+// parts) and a 40^3 second-order one (four), as the CPU builds them.
+TEST(SplitArrays, TablesBuiltOnTheGpuMatchTheCpu) {
+  const DiscreteTf tf(load_transfer_function(test::source_path("presets/neghip_spike.json")), 200);
+  const PreintegrationTable gpu = make_vulkan_table_builder("sliced", 0)->build(tf, 3.0);
+  const PreintegrationTable cpu = SlicedBuilder().build(tf, 3.0);
+  double max = 0;
+  for (std::size_t i = 0; i < cpu.data().size(); ++i) max = std::max(max, std::abs(double(gpu.data()[i]) - cpu.data()[i]));
+  EXPECT_LE(max, 1e-5);
+  const DiscreteTf tf2(load_transfer_function(test::source_path("presets/bonsai.json")), 40);
+  const SecondOrderTable g2 = make_vulkan_second_order_builder("fast")->build(tf2, 3.0, 8);
+  const SecondOrderTable c2 = make_second_order_builder("fast")->build(tf2, 3.0, 8);
+  max = 0;
+  for (std::size_t i = 0; i < c2.bytes() / sizeof(float); ++i) max = std::max(max, std::abs(double(g2.data()[i]) - c2.data()[i]));
+  EXPECT_LE(max, 1e-6);
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }
 

@@ -1,6 +1,7 @@
 // The Vulkan device and the command line around it (issue 22, items 1 and 5):
 // `vri devices`, `--backend vulkan` giving the CPU's PNG, VRI_VULKAN_DEVICE,
-// and a machine without a driver getting one clear line and no file.
+// `vri table --backend vulkan`, and a machine without a driver getting one
+// clear line and no file.
 #include <gtest/gtest.h>
 
 #include "cli/cli_support.hpp"
@@ -46,6 +47,27 @@ TEST(VulkanCli, DevicesAndBackendFlag) {
   EXPECT_EQ(index.code, 1);
   EXPECT_NE(index.err.find("VRI_VULKAN_DEVICE=7 names no device"), std::string::npos) << index.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+// `vri table --backend vulkan` (issue 22, item 3): the GPU's table, the
+// builders it has, and one line and no file for the others.
+TEST(VulkanCli, TableBackend) {
+  TempDir dir;
+  const std::string tf = " --tf " + source_path("presets/bonsai.json") + " --size 64";
+  const ProcessResult gpu = run("table" + tf + " --backend vulkan -o " + (dir / "g.npy").string(), dir);
+  ASSERT_EQ(gpu.code, 0) << gpu.err;
+  EXPECT_NE(gpu.err.find("with 'sliced (vulkan)'"), std::string::npos) << gpu.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "g.npy"));
+  const ProcessResult second = run("table" + tf + " --order 2 --backend vulkan -o " + (dir / "g2.npy").string(), dir);
+  ASSERT_EQ(second.code, 0) << second.err;
+  EXPECT_NE(second.err.find("64x64x64 table with 'fast (vulkan)'"), std::string::npos) << second.err;
+  for (const char* bad : {" --builder incremental --backend vulkan", " --accumulation 12bit --backend vulkan",
+                          " --order 2 --builder plain --backend vulkan", " --backend metal"}) {
+    const ProcessResult r = run("table" + tf + bad + " -o " + (dir / "x.npy").string(), dir);
+    EXPECT_EQ(r.code, 1) << bad;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.npy")) << bad;
+  }
 }
 
 TEST(VulkanCli, NoDriverIsOneLineAndNoFile) {

@@ -7,7 +7,7 @@
 namespace vri::vulkan {
 
 ComputeKernel::ComputeKernel(std::shared_ptr<const VulkanDevice> device, std::span<const std::uint32_t> spirv,
-                             int buffers, std::uint32_t push_bytes)
+                             int buffers, std::uint32_t push_bytes, std::uint32_t split_arrays)
     : device_(std::move(device)), buffers_(buffers), push_bytes_(push_bytes) {
   const Api& api = device_->api();
   const VkDevice d = device_->device();
@@ -43,6 +43,9 @@ ComputeKernel::ComputeKernel(std::shared_ptr<const VulkanDevice> device, std::sp
     cp.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     cp.stage.module = module_;
     cp.stage.pName = "main";
+    const VkSpecializationMapEntry entry{0, 0, sizeof split_arrays};
+    const VkSpecializationInfo specialization{1, &entry, sizeof split_arrays, &split_arrays};
+    cp.stage.pSpecializationInfo = &specialization;
     cp.layout = layout_;
     check(api.vkCreateComputePipelines(d, VK_NULL_HANDLE, 1, &cp, nullptr, &pipeline_), "vkCreateComputePipelines");
 
@@ -80,7 +83,7 @@ void ComputeKernel::release() noexcept {
 }
 
 void ComputeKernel::run(std::uint32_t groups_x, std::uint32_t groups_y, std::span<const GpuBuffer* const> buffers,
-                        const void* push) const {
+                        const void* push, std::uint32_t groups_z) const {
   if (static_cast<int>(buffers.size()) != buffers_) throw Error("vulkan: a kernel run with the wrong buffers");
   const Api& api = device_->api();
   std::lock_guard lock(mutex_);
@@ -101,7 +104,7 @@ void ComputeKernel::run(std::uint32_t groups_x, std::uint32_t groups_y, std::spa
     api.vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     api.vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0, nullptr);
     if (push_bytes_) api.vkCmdPushConstants(cb, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, push_bytes_, push);
-    api.vkCmdDispatch(cb, groups_x, groups_y, 1);
+    api.vkCmdDispatch(cb, groups_x, groups_y, groups_z);
     // The results visible to the copies and host reads that follow.
     VkMemoryBarrier barrier{};
     barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;

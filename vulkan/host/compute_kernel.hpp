@@ -1,7 +1,9 @@
 #pragma once
 // ComputeKernel: one compute shader (SPIR-V compiled by glslc at build time,
 // embedded in the binary: vulkan/CMakeLists.txt) as a pipeline whose bindings
-// 0 .. n-1 are storage buffers and whose parameters are push constants.
+// 0 .. n-1 are storage buffers and whose parameters are push constants;
+// `split_arrays` is its specialization constant 0 (split_array.glsl's
+// kSplitArrays: which input arrays come in several parts).
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -15,15 +17,15 @@ namespace vri::vulkan {
 class ComputeKernel {
  public:
   ComputeKernel(std::shared_ptr<const VulkanDevice> device, std::span<const std::uint32_t> spirv, int buffers,
-                std::uint32_t push_bytes);
+                std::uint32_t push_bytes, std::uint32_t split_arrays = 0);
   ~ComputeKernel();
   ComputeKernel(const ComputeKernel&) = delete;
   ComputeKernel& operator=(const ComputeKernel&) = delete;
 
-  // Runs groups_x x groups_y work groups with `buffers` bound in order and
-  // `push` as the push constants (push_bytes of them), and waits.
+  // Runs groups_x x groups_y x groups_z work groups with `buffers` bound in
+  // order and `push` as the push constants (push_bytes of them), and waits.
   void run(std::uint32_t groups_x, std::uint32_t groups_y, std::span<const GpuBuffer* const> buffers,
-           const void* push) const;
+           const void* push, std::uint32_t groups_z = 1) const;
 
  private:
   std::shared_ptr<const VulkanDevice> device_;

@@ -8,6 +8,7 @@
 // no element straddles two parts.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -25,6 +26,7 @@ class GpuArray {
   GpuArray(std::shared_ptr<const VulkanDevice> device, std::span<const std::byte> data, const char* what);
 
   std::size_t size() const { return bytes_; }
+  bool split() const { return parts_.size() > 1; }
   // The buffers for a SPLIT_INPUT's or SPLIT_OUTPUT's kParts bindings: the
   // parts, the last one repeated where there are fewer.
   std::array<const GpuBuffer*, kParts> bindings() const;
@@ -46,12 +48,18 @@ class Bindings {
   }
   Bindings& add(const GpuArray& a) {
     for (const GpuBuffer* b : a.bindings()) list_.push_back(b);
+    if (a.split()) split_ |= 1u << arrays_;
+    ++arrays_;
     return *this;
   }
   std::span<const GpuBuffer* const> list() const { return list_; }
+  // Bit k: the k-th array added has several parts (split_array.glsl's
+  // kSplitArrays, a ComputeKernel's `split_arrays`).
+  std::uint32_t split_arrays() const { return split_; }
 
  private:
   std::vector<const GpuBuffer*> list_;
+  std::uint32_t arrays_ = 0, split_ = 0;
 };
 
 }  // namespace vri::vulkan

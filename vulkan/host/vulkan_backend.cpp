@@ -1,5 +1,6 @@
 // The Vulkan backend's entry points (include/vri/render/backend.hpp): which
-// method runs on the GPU, and the device list of `vri devices`.
+// method runs on the GPU, which table builders do, and the device list of
+// `vri devices`.
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "vulkan_device.hpp"
 #include "vulkan_preint.hpp"
 #include "vulkan_riemann.hpp"
+#include "vulkan_table_builders.hpp"
 
 namespace vri {
 
@@ -24,6 +26,20 @@ std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene)
     throw Error("--backend vulkan: the GPU computes in float; --double needs --backend cpu");
   if (m == "riemann") return std::make_unique<vulkan::VulkanRiemann>(vulkan::VulkanDevice::shared(), scene);
   return std::make_unique<vulkan::VulkanPreint>(vulkan::VulkanDevice::shared(), scene);
+}
+
+std::unique_ptr<TableBuilder> make_vulkan_table_builder(const std::string& builder, int steps) {
+  if (builder != "sliced")
+    throw Error("--backend vulkan: the first-order builder '" + builder +
+                "' is not on the GPU; sliced (Roettger & Ertl) is (docs/GPU.md)");
+  return std::make_unique<vulkan::VulkanSlicedBuilder>(vulkan::VulkanDevice::shared(), steps);
+}
+
+std::unique_ptr<SecondOrderBuilder> make_vulkan_second_order_builder(const std::string& builder) {
+  if (builder != "fast")
+    throw Error("--backend vulkan: the second-order builder '" + builder +
+                "' is not on the GPU; fast (El Hajjar et al.) is (docs/GPU.md)");
+  return std::make_unique<vulkan::VulkanSecondOrderBuilder>(vulkan::VulkanDevice::shared());
 }
 
 std::vector<std::string> list_vulkan_devices() {

@@ -44,9 +44,7 @@ VulkanPreint::VulkanPreint(std::shared_ptr<const VulkanDevice> device, const Sce
       steps_(scene.method.name == "preint2" ? 2 : 1),
       h_(detail::world_step(scene.grid(), scene.method.step, scene.method.name.c_str())),
       tf_(scene.transfer_function, scene.method.table_size),
-      sampler_(scene.grid()),
-      kernel_(device_, steps_ == 1 ? std::span<const std::uint32_t>(kPreint1Spirv) : kPreint2Spirv, kBindings,
-              sizeof(Params)) {
+      sampler_(scene.grid()) {
   const Lighting& lighting = scene.lighting;
   if (lighting.enabled && lighting.mode != "sampled" && lighting.mode != "interpolated")
     throw Error(scene.method.name + ": lighting mode must be sampled or interpolated, got '" + lighting.mode + "'");
@@ -83,11 +81,22 @@ VulkanPreint::VulkanPreint(std::shared_ptr<const VulkanDevice> device, const Sce
   for (int k = 0; k < 3; ++k)
     if (tables_[k]) on_device_[k].emplace(device_, bytes_of(tables_[k], floats), names[k]);
   lighting_.weighted = interpolated ? tables_ : std::array<const float*, 3>{};
-  if (!lighting.enabled) return;
-  shader_.emplace(lighting, scene.grid());
-  shading_.emplace(device_, lighting, *shader_, scene.grid());
-  float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, sampler_);
-  lighting_.shading = float_shading_.get();
+  if (lighting.enabled) {
+    shader_.emplace(lighting, scene.grid());
+    shading_.emplace(device_, lighting, *shader_, scene.grid());
+    float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, sampler_);
+    lighting_.shading = float_shading_.get();
+  }
+  kernel_.emplace(device_, steps_ == 1 ? std::span<const std::uint32_t>(kPreint1Spirv) : kPreint2Spirv, kBindings,
+                  sizeof(Params), inputs().split_arrays());
+}
+
+// Where a mode does not read an array, the volume stands in for it.
+Bindings VulkanPreint::inputs() const {
+  const auto or_volume = [&](const std::optional<GpuArray>& a) -> const GpuArray& { return a ? *a : volume_.samples; };
+  Bindings b;
+  b.add(volume_.samples).add(or_volume(on_device_[0])).add(or_volume(on_device_[1])).add(or_volume(on_device_[2]));
+  return std::move(b.add(shading_ ? shading_->gradients : volume_.samples).add(nullptr /* the rays */));
 }
 
 VulkanPreint::~VulkanPreint() = default;
@@ -103,12 +112,7 @@ Image VulkanPreint::render(const Camera& camera, const RenderOptions& options) c
     p.ka = shading_->ka, p.kd = shading_->kd, p.ks = shading_->ks;
     p.shininess = shading_->shininess, p.flat = shading_->flat;
   }
-  // Where a mode does not read an array, the volume stands in for it.
-  const auto or_volume = [&](const std::optional<GpuArray>& a) -> const GpuArray& { return a ? *a : volume_.samples; };
-  Bindings b;
-  b.add(volume_.samples).add(or_volume(on_device_[0])).add(or_volume(on_device_[1])).add(or_volume(on_device_[2]));
-  b.add(shading_ ? shading_->gradients : volume_.samples).add(nullptr /* the rays */);
-  return run_pixels(device_, kernel_, camera.width(), camera.height(), b.list(), rays, slab_ray_floats(steps_),
+  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, slab_ray_floats(steps_),
                     p.grid, &p);
 }
 

@@ -53,7 +53,9 @@ class VulkanPreint final : public VulkanGridRenderer {
   FloatSampler sampler_;
   std::unique_ptr<detail::FloatShading> float_shading_;
   detail::FloatLighting lighting_;  // as the CPU's float march lights its last slabs
-  ComputeKernel kernel_;
+  std::optional<ComputeKernel> kernel_;  // made once the arrays are on the device
+  // The kernel's inputs in binding order, the rays' slot null.
+  Bindings inputs() const;
 };
 
 }  // namespace vri::vulkan

@@ -31,11 +31,20 @@ struct Params {
 VulkanRiemann::VulkanRiemann(std::shared_ptr<const VulkanDevice> device, const Scene& scene)
     : VulkanGridRenderer(std::move(device), scene),
       h_(detail::world_step(scene.grid(), scene.method.step, "riemann")),
-      tf_(device_, FloatTransferFunction(scene.transfer_function)),
-      kernel_(device_, kSpirv, 2 * GpuArray::kParts + 4, sizeof(Params)) {
-  if (!scene.lighting.enabled) return;
-  shader_.emplace(scene.lighting, scene.grid());
-  shading_.emplace(device_, scene.lighting, *shader_, scene.grid());
+      tf_(device_, FloatTransferFunction(scene.transfer_function)) {
+  if (scene.lighting.enabled) {
+    shader_.emplace(scene.lighting, scene.grid());
+    shading_.emplace(device_, scene.lighting, *shader_, scene.grid());
+  }
+  const Bindings b = inputs();
+  kernel_.emplace(device_, kSpirv, static_cast<int>(b.list().size()) + 1, sizeof(Params), b.split_arrays());
+}
+
+// Unlit, the volume stands in for the gradients the shader does not read.
+Bindings VulkanRiemann::inputs() const {
+  Bindings b;
+  b.add(volume_.samples).add(shading_ ? shading_->gradients : volume_.samples);
+  return std::move(b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */));
 }
 
 Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) const {
@@ -49,11 +58,8 @@ Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) 
     p.ka = shading_->ka, p.kd = shading_->kd, p.ks = shading_->ks;
     p.shininess = shading_->shininess, p.flat = shading_->flat;
   }
-  // Unlit, the volume stands in for the gradients the shader does not read.
-  Bindings b;
-  b.add(volume_.samples).add(shading_ ? shading_->gradients : volume_.samples);
-  b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */);
-  return run_pixels(device_, kernel_, camera.width(), camera.height(), b.list(), rays, kRiemannRayFloats, p.grid, &p);
+  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kRiemannRayFloats,
+                    p.grid, &p);
 }
 
 }  // namespace vri::vulkan

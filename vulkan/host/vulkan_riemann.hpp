@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "compute_kernel.hpp"
+#include "gpu_array.hpp"
 #include "vulkan_grid_renderer.hpp"
 
 namespace vri::vulkan {
@@ -23,7 +24,9 @@ class VulkanRiemann final : public VulkanGridRenderer {
   GpuTransferFunction tf_;
   std::optional<HeadlightShader> shader_;  // lit: the gradients
   std::optional<GpuShading> shading_;
-  ComputeKernel kernel_;
+  std::optional<ComputeKernel> kernel_;  // made once the arrays are on the device
+  // The kernel's inputs in binding order, the rays' slot null.
+  Bindings inputs() const;
 };
 
 }  // namespace vri::vulkan

@@ -27,13 +27,13 @@ layout(push_constant) uniform Params {
 } p;
 
 #include "split_array.glsl"
-SPLIT_INPUT(uint, volume, 0, 2u)
+SPLIT_INPUT(uint, volume, 0, 2u, 0)
 // Unlit and sampled: the table. Interpolated: the weighted tables, front to
 // back (preint1: front, back; preint2: full, middle, back).
-SPLIT_INPUT(vec4, table, 4, 4u)
-SPLIT_INPUT(vec4, weighted1, 8, 4u)
-SPLIT_INPUT(vec4, weighted2, 12, 4u)
-SPLIT_INPUT(float, gradients, 16, 2u)  // lit only
+SPLIT_INPUT(vec4, table, 4, 4u, 1)
+SPLIT_INPUT(vec4, weighted1, 8, 4u, 2)
+SPLIT_INPUT(vec4, weighted2, 12, 4u, 3)
+SPLIT_INPUT(float, gradients, 16, 2u, 4)  // lit only
 // Per ray (ray_setup.hpp, slab_rays): u0 (hi x3, lo x3), du (hi x3, lo x3),
 // the number of whole slabs (int bits), the last STEPS sub-slabs'
 // premultiplied (r, g, b, alpha), the direction (x, y, z).

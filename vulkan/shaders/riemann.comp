@@ -22,8 +22,8 @@ layout(push_constant) uniform Params {
 } p;
 
 #include "split_array.glsl"
-SPLIT_INPUT(uint, volume, 0, 2u)
-SPLIT_INPUT(float, gradients, 4, 2u)  // lit only
+SPLIT_INPUT(uint, volume, 0, 2u, 0)
+SPLIT_INPUT(float, gradients, 4, 2u, 1)  // lit only
 layout(std430, binding = 8) readonly buffer Tf { float v[]; } tf;
 layout(std430, binding = 9) readonly buffer TfBins { int first[]; } bins;
 // Per ray (ray_setup.hpp, kRiemannRayFloats): u0 (hi x3, lo x3), du (hi x3,

@@ -15,6 +15,8 @@
 namespace vri {
 
 struct Scene;
+class TableBuilder;        // vri/tables/table_builder.hpp
+class SecondOrderBuilder;  // vri/tables/second_order_table.hpp
 
 enum class Backend { Cpu, Vulkan };
 
@@ -39,6 +41,14 @@ class GpuSceneRenderer {
 // vri::Error with one line when this build has no Vulkan backend, no device
 // is usable, or the scene's method or options are not on the GPU yet.
 std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene);
+
+// Pre-integration tables built on the Vulkan device (issue 22, item 3;
+// docs/GPU.md, "Tables"): order 1 by `sliced` (Roettger & Ertl 2002,
+// SlicedBuilder's with float32 accumulation; steps 0: 2N), order 2 by `fast`
+// (El Hajjar et al. 2008, FastSecondOrderBuilder's). vri::Error with one
+// line for another builder, or as make_vulkan_scene_renderer.
+std::unique_ptr<TableBuilder> make_vulkan_table_builder(const std::string& builder, int steps);
+std::unique_ptr<SecondOrderBuilder> make_vulkan_second_order_builder(const std::string& builder);
 
 // `vri devices`: each Vulkan device, one line ("0: llvmpipe (LLVM 15.0.6,
 // 256 bits), CPU, Vulkan 1.3.230"); an empty list when there are none.

@@ -25,13 +25,16 @@ struct TableRequest {
   std::optional<int> iterations;      // order 2: chords per slab (default kDefaultSecondOrderIterations)
   int steps = 0;                      // sliced: integration steps (0: 2N)
   std::string accumulation = "fp32";  // sliced: 8bit, 12bit, fp16, fp32
+  // cpu or vulkan (order 1: sliced, the default there, fp32 only; order 2:
+  // fast): where the table is built (vri/render/backend.hpp).
+  std::string backend = "cpu";
 };
 
 struct BuiltTable {
   std::vector<std::size_t> shape;
   std::span<const float> data;  // float32 premultiplied RGBA, C order
   std::shared_ptr<const void> owner;  // the table the data lives in (no copy)
-  std::string builder;      // the builder's own name
+  std::string builder;      // the builder's own name, with " (vulkan)" when built there
   double seconds = 0;       // build time (the table alone)
 };
 

@@ -1,0 +1,86 @@
+#include "vulkan_table_builders.hpp"
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "gpu_array.hpp"
+#include "gpu_discrete_tf.hpp"
+#include "vri/core/error.hpp"
+#include "vri/tables/incremental_builder.hpp"
+#include "vri/tables/second_order_weighted.hpp"
+
+namespace vri::vulkan {
+
+namespace {
+
+const std::uint32_t kSlicedSpirv[] = {
+#include "sliced_table.spv.inc"
+};
+const std::uint32_t kSecondOrderSpirv[] = {
+#include "second_order_table.spv.inc"
+};
+
+struct SlicedParams {
+  std::uint32_t part_shift;
+  std::int32_t table_n, steps;
+  float dl;
+  std::uint32_t base;
+};
+
+struct SecondOrderParams {
+  std::uint32_t part_shift;
+  std::int32_t table_n, iterations;
+};
+
+std::uint32_t groups_of_64(int n) { return static_cast<std::uint32_t>((n + 63) / 64); }
+
+}  // namespace
+
+VulkanSlicedBuilder::VulkanSlicedBuilder(std::shared_ptr<const VulkanDevice> device, int steps)
+    : device_(std::move(device)), steps_(steps), kernel_(device_, kSlicedSpirv, GpuArray::kParts + 3, sizeof(SlicedParams)) {
+  if (steps < 0 || steps > (1 << 20))
+    throw Error("sliced: steps must be in [0, 1048576], got " + std::to_string(steps));
+}
+
+PreintegrationTable VulkanSlicedBuilder::build(const DiscreteTf& tf, double length) const {
+  check_slab_length(length);
+  const int n = tf.size(), steps = steps_ > 0 ? steps_ : 2 * n;
+  PreintegrationTable table(tf.axis(), length);
+  const GpuDiscreteTf on_device(device_, tf);
+  const std::size_t floats = table.data().size();
+  const GpuArray entries(device_, floats * sizeof(float), "the pre-integration table");
+  const SlicedParams p{device_->part_shift(), n, steps, static_cast<float>(length / steps), 0};
+  Bindings b;
+  b.add(entries).add(&on_device.samples).add(&on_device.sub_begin).add(&on_device.subs);
+  kernel_.run(groups_of_64(n), static_cast<std::uint32_t>(n), b.list(), &p);
+  entries.download(std::as_writable_bytes(std::span<float>(table.entry(0, 0), floats)));
+  return table;
+}
+
+VulkanSecondOrderBuilder::VulkanSecondOrderBuilder(std::shared_ptr<const VulkanDevice> device)
+    : device_(std::move(device)),
+      kernel_(device_, kSecondOrderSpirv, GpuArray::kParts + 1, sizeof(SecondOrderParams)) {}
+
+SecondOrderTable VulkanSecondOrderBuilder::build(const DiscreteTf& tf, double length, int iterations) const {
+  check_slab_length(length);
+  check_iterations(iterations);
+  SecondOrderTable table(tf.axis(), length, iterations);
+  const int n = tf.size();
+  const PreintegrationTable chords = IncrementalBuilder().build(tf, length / iterations);
+  const GpuBuffer chords_on_device(device_, std::as_bytes(chords.data()), "the chords' table");
+  const std::size_t floats = table.bytes() / sizeof(float);
+  const GpuArray entries(device_, table.bytes(), "the second-order table");
+  const SecondOrderParams p{device_->part_shift(), n, iterations};
+  Bindings b;
+  b.add(entries).add(&chords_on_device);
+  kernel_.run(groups_of_64(n), static_cast<std::uint32_t>(n), b.list(), &p, static_cast<std::uint32_t>(n));
+  entries.download(std::as_writable_bytes(std::span<float>(table.entry(0, 0, 0), floats)));
+  return table;
+}
+
+SecondOrderWeightedTables VulkanSecondOrderBuilder::build_weighted(const DiscreteTf&, double, int) const {
+  throw Error("vulkan: the weighted second-order tables (interpolated lighting) are built on the CPU");
+}
+
+}  // namespace vri::vulkan

@@ -1,0 +1,46 @@
+#pragma once
+// Pre-integration tables built on a Vulkan device (issue 22, item 3), behind
+// the CPU builders' interfaces, so `vri table --backend vulkan`, the Python
+// vri.table and build_length_table use them as any builder:
+//   VulkanSlicedBuilder: Roettger & Ertl 2002's slice-by-slice first-order
+//     table (shaders/sliced_table.comp), SlicedBuilder's with float32
+//     accumulation; a table of M lengths is M of its dispatches.
+//   VulkanSecondOrderBuilder: El Hajjar et al. 2008's second-order table
+//     (shaders/second_order_table.comp), FastSecondOrderBuilder's: the
+//     chords' first-order table built on the host (IncrementalBuilder,
+//     O(N^2)), the O(N^3 K) chords on the device.
+#include <memory>
+
+#include "compute_kernel.hpp"
+#include "vri/tables/second_order_table.hpp"
+#include "vri/tables/table_builder.hpp"
+
+namespace vri::vulkan {
+
+class VulkanSlicedBuilder final : public TableBuilder {
+ public:
+  // steps = 0: 2 N steps. Throws vri::Error unless 0 <= steps <= 1 << 20.
+  VulkanSlicedBuilder(std::shared_ptr<const VulkanDevice> device, int steps);
+  std::string_view name() const override { return "sliced"; }
+  PreintegrationTable build(const DiscreteTf& tf, double length) const override;
+
+ private:
+  std::shared_ptr<const VulkanDevice> device_;
+  int steps_;
+  ComputeKernel kernel_;
+};
+
+class VulkanSecondOrderBuilder final : public SecondOrderBuilder {
+ public:
+  explicit VulkanSecondOrderBuilder(std::shared_ptr<const VulkanDevice> device);
+  std::string_view name() const override { return "fast"; }
+  SecondOrderTable build(const DiscreteTf& tf, double length, int iterations) const override;
+  // Not on the GPU yet: vri::Error.
+  SecondOrderWeightedTables build_weighted(const DiscreteTf& tf, double length, int iterations) const override;
+
+ private:
+  std::shared_ptr<const VulkanDevice> device_;
+  ComputeKernel kernel_;
+};
+
+}  // namespace vri::vulkan
