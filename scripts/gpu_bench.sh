@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # gpu_bench.sh [BUILD_DIR] [REPEATS]: the GPU figures of docs/GPU.md (issue
 # 22, item 6), --backend vulkan beside --backend cpu (2 threads) in the same
-# run: the frame time of `preint1`, `preint2` and `riemann` (step 1, 512 x
-# 512) on neghip and bonsai, the fastest of REPEATS renders as `vri render`
-# reports them (the render alone: rays set up, the dispatch, the image read
-# back; not the volume upload or the table build), with the largest
-# difference between the two images; then the build time of the 256²
-# sliced and 256³ second-order tables as `vri table` reports it (on the GPU:
-# the transfer function up, the dispatch, the table back). Prints the
-# machine and the Vulkan device first: on a machine without a GPU that
-# device is lavapipe, Mesa's CPU emulation, and its times are labelled so.
+# run: the frame time of `preint1`, `preint2`, `riemann` (step 1) and
+# `adaptive` (coupled, tolerance 1e-3) at 512 x 512 on neghip and bonsai,
+# the fastest of REPEATS renders as `vri render` reports them (the render
+# alone: rays set up, the dispatch, the image read back; not the volume
+# upload or the table build), with the largest difference between the two
+# images (adaptive: step decisions in float against double, docs/GPU.md);
+# then the build time of the 256² sliced and 256³ second-order tables as
+# `vri table` reports it (on the GPU: the transfer function up, the
+# dispatch, the table back). Prints the machine and the Vulkan device
+# first: on a machine without a GPU that device is lavapipe, Mesa's CPU
+# emulation, and its times are labelled so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
@@ -34,8 +36,9 @@ echo
 echo "| scene | method | CPU ms (2 threads) | Vulkan ms ($label) | CPU / Vulkan | max difference |"
 echo "|---|---|---|---|---|---|"
 for scene in neghip bonsai; do
-  for method in preint1 preint2 riemann; do
+  for method in preint1 preint2 riemann adaptive; do
     args=(scenes/$scene.json --method "$method" --step 1 --width 512 --height 512)
+    [ "$method" = adaptive ] && args+=(--strategy coupled --tolerance 1e-3)
     cpu=$(best "${args[@]}" -o "$tmp/cpu.npy" --threads 2)
     gpu=$(best "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
     diff=$("$vri" compare "$tmp/gpu.npy" "$tmp/cpu.npy" --tolerance 1e-4 | awk 'NR > 1 { if ($4 > m) m = $4 } END { printf "%.1e", m }')

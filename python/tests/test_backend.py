@@ -75,3 +75,14 @@ def test_tables_built_on_the_gpu_match_the_cpu(root):
         vri.table(tf, size=32, builder="incremental", backend="vulkan")
     with pytest.raises(ValueError, match="builds in fp32"):
         vri.table(tf, size=32, accumulation="8bit", backend="vulkan")
+
+
+@gpu
+def test_vulkan_adaptive_follows_the_cpu(root):
+    scene = vri.load_scene(root / "scenes" / "engine.json")
+    kw = dict(method="adaptive", strategy="coupled", tolerance=1e-3, **SMALL)
+    cpu = vri.render(scene, **kw)
+    gpu = vri.render(scene, backend="vulkan", **kw)
+    assert (np.abs(gpu - cpu).max(-1) > 1e-4).mean() <= 0.01
+    with pytest.raises(ValueError, match="at least 1e-5"):
+        vri.render(scene, backend="vulkan", **dict(kw, tolerance=1e-6))

@@ -84,6 +84,29 @@ std::vector<float> riemann_rays(const Camera& camera, const GridVolume& volume, 
   return out;
 }
 
+std::vector<float> adaptive_rays(const Camera& camera, const GridVolume& volume, int threads) {
+  const int W = camera.width(), H = camera.height();
+  std::vector<float> out(static_cast<std::size_t>(W) * H * kAdaptiveRayFloats, 0.0f);
+  const FloatSampler sampler(volume);
+  for_rows(H, threads, [&](int y) {
+    for (int x = 0; x < W; ++x) {
+      float* r = out.data() + (static_cast<std::size_t>(y) * W + x) * kAdaptiveRayFloats;
+      const Ray ray = camera.ray(x, y);
+      const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
+      r[12] = -1;
+      if (!iv) continue;
+      const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir);
+      for (int a = 0; a < 3; ++a) {
+        put(r + a, u0[a], 3);
+        put(r + 6 + a, du[a], 3);
+      }
+      r[12] = static_cast<float>(iv->length());
+      put_direction(r + 13, ray);
+    }
+  });
+  return out;
+}
+
 std::vector<float> slab_rays(int steps, const Camera& camera, const GridVolume& volume, const DiscreteTf& tf,
                              const detail::FloatLighting& lighting, double h, int threads) {
   if (steps != 1 && steps != 2) throw Error("vulkan: slabs of 1 or 2 steps, not " + std::to_string(steps));

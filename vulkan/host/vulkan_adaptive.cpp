@@ -1,0 +1,86 @@
+#include "vulkan_adaptive.hpp"
+
+#include <cstdint>
+#include <string>
+
+#include "pixel_kernel.hpp"
+#include "ray_setup.hpp"
+#include "vri/core/error.hpp"
+#include "vri/integrators/adaptive_params.hpp"
+#include "vri/transfer/float_transfer_function.hpp"
+
+namespace vri::vulkan {
+
+namespace {
+
+const std::uint32_t kSpirv[] = {
+#include "adaptive.spv.inc"
+};
+
+// adaptive.comp's push constants.
+struct Params {
+  GridParams grid;
+  float tf_lo, tf_scale;
+  std::int32_t tf_bins, segments;
+  std::int32_t lit;
+  float ka, kd, ks, shininess, flat;
+  float tolerance, h0, hmin, hmax;  // world units
+  std::int32_t coupled;
+};
+static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
+
+}  // namespace
+
+VulkanAdaptive::VulkanAdaptive(std::shared_ptr<const VulkanDevice> device, const Scene& scene)
+    : VulkanGridRenderer(std::move(device), scene), tf_(device_, FloatTransferFunction(scene.transfer_function)) {
+  const MethodSpec& m = scene.method;
+  const AdaptiveParams params{m.tolerance, m.h0, m.hmin, m.hmax, parse_adaptive_strategy(m.strategy)};
+  params.validate();
+  if (params.strategy == AdaptiveStrategy::Guaranteed)
+    throw Error("--backend vulkan: adaptive strategy 'guaranteed' is not on the GPU yet; coupled and decoupled are "
+                "(docs/GPU.md)");
+  if (params.tolerance < kMinTolerance)
+    throw Error("--backend vulkan: adaptive computes in float on the GPU; its tolerance must be at least 1e-5, got " +
+                std::to_string(params.tolerance));
+  if (scene.lighting.enabled) {
+    shader_.emplace(scene.lighting, scene.grid());
+    shading_.emplace(device_, scene.lighting, *shader_, scene.grid());
+  }
+  kernel_.emplace(device_, kSpirv, static_cast<int>(inputs().list().size()) + 1, sizeof(Params),
+                  inputs().split_arrays());
+}
+
+// Unlit, the volume stands in for the gradients the shader does not read.
+Bindings VulkanAdaptive::inputs() const {
+  Bindings b;
+  b.add(volume_.samples).add(shading_ ? shading_->gradients : volume_.samples);
+  return std::move(b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */));
+}
+
+Image VulkanAdaptive::render(const Camera& camera, const RenderOptions& options) const {
+  throw_if_cancelled(options);
+  const GridVolume& volume = scene_.grid();
+  const MethodSpec& m = scene_.method;
+  const double vu = volume.voxel_unit();
+  const std::vector<float> rays = adaptive_rays(camera, volume, options.threads);
+  Params p{grid_params(*device_, volume, volume_.type, 0),
+           tf_.lo,
+           tf_.scale,
+           FloatTransferFunction::kBins,
+           tf_.segments,
+           0, 0, 0, 0, 0, 0,
+           static_cast<float>(m.tolerance),
+           static_cast<float>(m.h0 * vu),
+           static_cast<float>(m.hmin * vu),
+           static_cast<float>(m.hmax * vu),
+           parse_adaptive_strategy(m.strategy) == AdaptiveStrategy::Coupled ? 1 : 0};
+  if (shading_) {
+    p.lit = 1;
+    p.ka = shading_->ka, p.kd = shading_->kd, p.ks = shading_->ks;
+    p.shininess = shading_->shininess, p.flat = shading_->flat;
+  }
+  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kAdaptiveRayFloats,
+                    p.grid, &p);
+}
+
+}  // namespace vri::vulkan

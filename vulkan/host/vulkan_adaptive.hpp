@@ -1,0 +1,34 @@
+#pragma once
+// adaptive (strategies coupled and decoupled: Campagnolo, Celes & de
+// Figueiredo 2015) on a Vulkan device (vulkan/shaders/adaptive.comp): the
+// CPU's AdaptiveSimpsonIntegrator, one invocation per ray, in float. Its
+// step decisions follow float error estimates, so its image is not the
+// CPU's to the byte; it is held to the same error against `exact`
+// (docs/GPU.md). Tolerances below 1e-5 are refused: float roundings in the
+// estimates would then drive every step to hmin. The `guaranteed` strategy
+// is not on the GPU yet.
+#include <memory>
+#include <optional>
+
+#include "compute_kernel.hpp"
+#include "gpu_array.hpp"
+#include "vulkan_grid_renderer.hpp"
+
+namespace vri::vulkan {
+
+class VulkanAdaptive final : public VulkanGridRenderer {
+ public:
+  static constexpr double kMinTolerance = 1e-5;
+  VulkanAdaptive(std::shared_ptr<const VulkanDevice> device, const Scene& scene);
+  Image render(const Camera& camera, const RenderOptions& options) const override;
+
+ private:
+  GpuTransferFunction tf_;
+  std::optional<HeadlightShader> shader_;  // lit: the gradients
+  std::optional<GpuShading> shading_;
+  std::optional<ComputeKernel> kernel_;  // made once the arrays are on the device
+  // The kernel's inputs in binding order, the rays' slot null.
+  Bindings inputs() const;
+};
+
+}  // namespace vri::vulkan

@@ -1,0 +1,185 @@
+#version 450
+// adaptive, strategies coupled and decoupled (SPEC §9; Campagnolo, Celes &
+// de Figueiredo 2015, Algorithms 2 and 3), on the GPU: the per-ray loop of
+// AdaptiveSimpsonIntegrator (include/vri/integrators/adaptive_simpson.hpp)
+// in one invocation, in float. A step [t, t+h] is tried with Simpson's rule
+// S(t,h), D(t,h) = S(t,h/2) + S(t+h/2,h/2), E = |D - S|/15 (simpson5.hpp);
+// E > eps halves the step and eps, a second consecutive success doubles
+// both, h in [hmin, hmax], eps = tol at h0. The inner integral (optical
+// depth) finds a step from t; the outer one (r, g, b, alpha) integrates
+// over it - `coupled` starting from the inner step, `decoupled` at its own
+// pace - with the optical depth inside each try from the quartic through
+// the tau samples; an inner interval with all five samples transparent
+// skips the outer one. Evaluations shared by adjacent steps and halves are
+// reused (a cache of the last 12, by their exact t). Samples: the scalar by
+// trilinear interpolation (grid_sampler.glsl), the transfer function
+// (transfer_function.glsl), lit with c a + b (shading.glsl). Positions
+// u0 + t du in double-float; t measured from the ray's entry.
+#extension GL_GOOGLE_include_directive : require
+layout(local_size_x = 64) in;
+
+#include "grid_params.glsl"
+layout(push_constant) uniform Params {
+  GRID_PARAMS
+  float tf_lo, tf_scale;
+  int tf_bins, segments;
+  int lit;  // 0: unlit; 1: each sample lit
+  float ka, kd, ks, shininess, flat_threshold;
+  float tolerance, h0, hmin, hmax;  // world units
+  int coupled;                      // 1: coupled, 0: decoupled
+} p;
+
+#include "split_array.glsl"
+SPLIT_INPUT(uint, volume, 0, 2u, 0)
+SPLIT_INPUT(float, gradients, 4, 2u, 1)  // lit only
+layout(std430, binding = 8) readonly buffer Tf { float v[]; } tf;
+layout(std430, binding = 9) readonly buffer TfBins { int first[]; } bins;
+// Per ray (ray_setup.hpp, kAdaptiveRayFloats): u0 (hi x3, lo x3), du per
+// world unit (hi x3, lo x3), the length inside the box (< 0: the ray misses
+// it), the direction (x, y, z).
+layout(std430, binding = 10) readonly buffer Rays { float r[]; } rays;
+layout(std430, binding = 11) writeonly buffer Image { vec4 px[]; } image;
+
+#include "double_float.glsl"
+#include "exp_neg.glsl"
+#include "grid_sampler.glsl"
+#include "transfer_function.glsl"
+#include "shading.glsl"
+
+const uint kRayFloats = 16u;
+
+DF u0[3], du[3];
+vec3 d;
+
+// (r, g, b, tau) at t, lit.
+vec4 eval(float t) {
+  DF u[3];
+  const DF k = DF(t, 0.0);
+  for (int a = 0; a < 3; ++a) u[a] = df_add(u0[a], df_mul(k, du[a]));
+  const Cell cell = grid_cell(u);
+  vec4 v = tf_at(interpolate(cell));
+  if (p.lit != 0) {
+    const Terms l = terms_of(gradient_at(cell), d);
+    v.rgb = v.rgb * l.a + l.b;
+  }
+  return v;
+}
+
+// The last evaluations, found again by their exact t.
+const int kCache = 12;
+float cache_t[kCache];
+vec4 cache_v[kCache];
+int cache_used = 0, cache_next = -1;
+
+vec4 cached(float t) {
+  for (int i = 0; i < cache_used; ++i)
+    if (cache_t[i] == t) return cache_v[i];
+  cache_next = (cache_next + 1) % kCache;
+  cache_used = max(cache_used, cache_next + 1);
+  cache_t[cache_next] = t;
+  cache_v[cache_next] = eval(t);
+  return cache_v[cache_next];
+}
+
+vec4 f[5];  // the five samples of the current try
+void sample_step(float t, float h) {
+  for (int k = 0; k < 5; ++k) f[k] = cached(t + h * (0.25 * float(k)));
+}
+
+float whole(float a, float b, float c, float h) { return h / 6.0 * (a + 4.0 * b + c); }
+float halves(float g0, float g1, float g2, float g3, float g4, float h) {
+  return h / 12.0 * (g0 + 4.0 * g1 + 2.0 * g2 + 4.0 * g3 + g4);
+}
+float error_of(float dd, float s) { return abs(dd - s) / 15.0; }
+bool accepted(float err, float h) { return err <= p.tolerance * h / p.h0 || h <= p.hmin; }
+float tau_error(float h) {
+  return error_of(halves(f[0].w, f[1].w, f[2].w, f[3].w, f[4].w, h), whole(f[0].w, f[2].w, f[4].w, h));
+}
+
+// Algorithm 2's step control (simpson5.hpp, StepControl).
+struct Control {
+  float h;
+  bool last_succeeded;
+};
+void succeeded(inout Control c) {
+  if (c.last_succeeded) c.h = min(2.0 * c.h, p.hmax);
+  c.last_succeeded = true;
+}
+void failed(inout Control c, float h_tried) {
+  c.h = max(0.5 * h_tried, p.hmin);
+  c.last_succeeded = false;
+}
+
+vec3 C = vec3(0.0);
+float T = 1.0;
+Control outer;
+
+// The outer integral over [a, b] (simpson_colour_step.hpp: colour_step, add_step).
+void outer_integral(float a, float b) {
+  for (float u = a; u < b;) {
+    const float h = min(outer.h, b - u);
+    sample_step(u, h);
+    // The optical depth from u to each sample: the quartic through the tau samples.
+    const float q = h / 4.0;
+    float depth[5];
+    depth[0] = 0.0;
+    depth[1] = q * (251.0 * f[0].w + 646.0 * f[1].w - 264.0 * f[2].w + 106.0 * f[3].w - 19.0 * f[4].w) / 720.0;
+    depth[2] = q * (29.0 * f[0].w + 124.0 * f[1].w + 24.0 * f[2].w + 4.0 * f[3].w - f[4].w) / 90.0;
+    depth[3] = q * (27.0 * f[0].w + 102.0 * f[1].w + 72.0 * f[2].w + 42.0 * f[3].w - 3.0 * f[4].w) / 80.0;
+    depth[4] = q * (14.0 * f[0].w + 64.0 * f[1].w + 24.0 * f[2].w + 64.0 * f[3].w + 14.0 * f[4].w) / 45.0;
+    vec4 g[5];
+    for (int k = 0; k < 5; ++k) {
+      const float w = f[k].w * T * exp_neg(depth[k]);
+      g[k] = vec4(f[k].rgb * w, w);
+    }
+    const vec4 S = h / 6.0 * (g[0] + 4.0 * g[2] + g[4]);
+    const vec4 D = h / 12.0 * (g[0] + 4.0 * g[1] + 2.0 * g[2] + 4.0 * g[3] + g[4]);
+    const vec4 E = abs(D - S) / 15.0;
+    if (!accepted(max(max(E.x, E.y), max(E.z, E.w)), h)) {
+      failed(outer, h);
+      continue;
+    }
+    // The step's opacity exactly for its optical depth; its colour Boole's
+    // estimate rescaled to that opacity.
+    const float T_after = T * exp_neg(depth[4]);
+    const vec4 boole = D + (D - S) / 15.0;
+    const float scale = boole.w > 0.0 ? (T - T_after) / boole.w : 0.0;
+    C += scale * boole.rgb;
+    T = T_after;
+    succeeded(outer);
+    u = h >= b - u ? b : u + h;
+  }
+}
+
+void main() {
+  const uint pixel = PIXEL_INDEX();
+  if (pixel >= p.pixels) return;
+  const uint r = pixel * kRayFloats;
+  for (int a = 0; a < 3; ++a) {
+    u0[a] = DF(rays.r[r + a], rays.r[r + 3 + a]);
+    du[a] = DF(rays.r[r + 6 + a], rays.r[r + 9 + a]);
+  }
+  const float t_end = rays.r[r + 12u];
+  d = vec3(rays.r[r + 13u], rays.r[r + 14u], rays.r[r + 15u]);
+  Control inner = Control(p.h0, true);
+  outer = Control(p.h0, true);
+  for (float t = 0.0; t < t_end;) {
+    float h;
+    for (;;) {
+      h = min(inner.h, t_end - t);
+      sample_step(t, h);
+      if (accepted(tau_error(h), h)) break;
+      failed(inner, h);
+    }
+    succeeded(inner);
+    const float b = h >= t_end - t ? t_end : t + h;
+    bool empty = true;
+    for (int k = 0; k < 5; ++k) empty = empty && f[k].w == 0.0;
+    if (!empty) {
+      if (p.coupled != 0) outer = Control(h, true);
+      outer_integral(t, b);
+    }
+    t = b;
+  }
+  image.px[pixel] = vec4(C, 1.0 - T);
+}
