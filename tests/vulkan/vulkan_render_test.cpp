@@ -3,8 +3,8 @@
 // path (issue 22, item 4: within 1e-4 per channel; on lavapipe they agree to
 // the byte), on every bundled grid scene - lit ones lit, preint1 and preint2
 // in both lighting modes - with riemann's jitter and early termination, and
-// on each storage type; adaptive (vulkan_adaptive.hpp) against the CPU's
-// adaptive and `exact`. Run with the validation layer on (validation_on.cpp):
+// on each storage type; empty-space skipping changing no byte; adaptive
+// (vulkan_adaptive.hpp) against the CPU's adaptive and `exact`. Run with the validation layer on (validation_on.cpp):
 // no message may appear.
 #include <gtest/gtest.h>
 
@@ -105,6 +105,20 @@ TEST_P(VulkanScene, AdaptiveFollowsTheCpu) {
     };
     EXPECT_LE(share_over(gpu, cpu, 1e-4), 0.01) << strategy;
     EXPECT_NEAR(share_over(gpu, reference, tolerance), share_over(cpu, reference, tolerance), 0.01) << strategy;
+  }
+  EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
+}
+
+// Empty-space skipping on the GPU (shaders/empty_space.glsl) leaps only over
+// what adds exactly nothing: the same bytes as marching through, on any device.
+TEST_P(VulkanScene, SkippingChangesNoPixel) {
+  for (const char* method : {"riemann", "preint1", "preint2"}) {
+    Scene scene = scene_with(method);
+    scene.method.table_size = 48;
+    const Image skipping = SceneRenderer(scene, Backend::Vulkan).render({.threads = 2});
+    scene.method.fast.skip_empty = false;
+    const Image marching = SceneRenderer(scene, Backend::Vulkan).render({.threads = 2});
+    EXPECT_EQ(test::compare(skipping, marching).differing, 0u) << method;
   }
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }

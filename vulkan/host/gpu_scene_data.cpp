@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "vri/core/error.hpp"
+#include "vri/volume/macro_cells.hpp"
 
 namespace vri::vulkan {
 
@@ -46,6 +47,27 @@ GpuShading::GpuShading(std::shared_ptr<const VulkanDevice> device, const Lightin
       ks(static_cast<float>(lighting.specular)),
       shininess(static_cast<float>(lighting.shininess)),
       flat(static_cast<float>(shader.flat_threshold())) {
+}
+
+namespace {
+
+std::vector<std::uint32_t> empty_bits(const GridVolume& volume, const EmptySpace* space) {
+  if (!space) return {0u};
+  const MacroCells cells(volume);
+  std::vector<std::uint32_t> bits((cells.count() + 31) / 32, 0u);
+  for (std::size_t i = 0; i < cells.count(); ++i)
+    if (space->empty(i)) bits[i / 32] |= 1u << (i % 32);
+  return bits;
+}
+
+}  // namespace
+
+GpuEmptySpace::GpuEmptySpace(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume,
+                             const EmptySpace* space)
+    : bits(std::move(device), as_bytes_of(empty_bits(volume, space)), "the empty macro cells"), on(space ? 1 : 0) {
+  if (!space) return;
+  const MacroCells cells(volume);
+  for (int a = 0; a < 3; ++a) dims[a] = cells.dims()[a];
 }
 
 GpuTransferFunction::GpuTransferFunction(std::shared_ptr<const VulkanDevice> device, const FloatTransferFunction& tf)

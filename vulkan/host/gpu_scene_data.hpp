@@ -3,12 +3,14 @@
 // samples packed in 32-bit words in their stored type (grid_sampler.glsl)
 // and the transfer function as FloatTransferFunction holds it
 // (transfer_function.glsl).
+#include <cstdint>
 #include <memory>
 
 #include "gpu_array.hpp"
 #include "gpu_buffer.hpp"
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/float_transfer_function.hpp"
+#include "vri/volume/empty_space.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri::vulkan {
@@ -27,6 +29,17 @@ struct GpuShading {
              const GridVolume& volume);
   GpuArray gradients;
   float ka, kd, ks, shininess, flat;
+};
+
+// Empty-space skipping on the device (shaders/empty_space.glsl): the macro
+// cells (macro_cells.hpp, 8 grid cells a side) the CPU classified against the
+// method's transfer function or table (EmptySpace), one bit each. `space`
+// null (skipping off): one word, nothing empty.
+struct GpuEmptySpace {
+  GpuEmptySpace(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume, const EmptySpace* space);
+  GpuBuffer bits;
+  std::int32_t dims[3] = {1, 1, 1};  // macro cells per axis
+  std::int32_t on = 0;               // 1: skip
 };
 
 struct GpuTransferFunction {

@@ -7,7 +7,9 @@
 #include "pixel_kernel.hpp"
 #include "ray_setup.hpp"
 #include "vri/core/error.hpp"
+#include "vri/integrators/fast_path.hpp"
 #include "vri/integrators/preint2.hpp"  // second_order_builder_name
+#include "vri/tables/zero_opacity.hpp"
 #include "vri/tables/table_builder.hpp"
 
 namespace vri::vulkan {
@@ -28,10 +30,13 @@ struct Params {
   float table_lo, table_scale;
   std::int32_t lit;  // 0 unlit, 1 sampled, 2 interpolated
   float ka, kd, ks, shininess, flat;
+  std::int32_t skip, macro_dims[3];
 };
+static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
-// The bindings of preint.comp: the volume, three tables, the gradients (four each), the rays, the image.
-constexpr int kBindings = 5 * GpuArray::kParts + 2;
+// The bindings of preint.comp: the volume, three tables, the gradients (four
+// each), the rays, the empty macro cells, the image.
+constexpr int kBindings = 5 * GpuArray::kParts + 3;
 
 std::span<const std::byte> bytes_of(const float* data, std::size_t floats) {
   return std::as_bytes(std::span<const float>(data, floats));
@@ -87,6 +92,10 @@ VulkanPreint::VulkanPreint(std::shared_ptr<const VulkanDevice> device, const Sce
     float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, sampler_);
     lighting_.shading = float_shading_.get();
   }
+  // The CPU's classification (preint1.cpp, preint2.cpp): what it would leap over.
+  const detail::Skipping skipping(scene.grid(), ZeroOpacity(tf_, steps_ == 2 ? TableOrder::Second : TableOrder::First),
+                                  scene.method.fast, scene.method.name);
+  empty_.emplace(device_, scene.grid(), skipping.space());
   kernel_.emplace(device_, steps_ == 1 ? std::span<const std::uint32_t>(kPreint1Spirv) : kPreint2Spirv, kBindings,
                   sizeof(Params), inputs().split_arrays());
 }
@@ -96,7 +105,8 @@ Bindings VulkanPreint::inputs() const {
   const auto or_volume = [&](const std::optional<GpuArray>& a) -> const GpuArray& { return a ? *a : volume_.samples; };
   Bindings b;
   b.add(volume_.samples).add(or_volume(on_device_[0])).add(or_volume(on_device_[1])).add(or_volume(on_device_[2]));
-  return std::move(b.add(shading_ ? shading_->gradients : volume_.samples).add(nullptr /* the rays */));
+  b.add(shading_ ? shading_->gradients : volume_.samples).add(nullptr /* the rays */);
+  return std::move(b.add(&empty_->bits));
 }
 
 VulkanPreint::~VulkanPreint() = default;
@@ -106,7 +116,8 @@ Image VulkanPreint::render(const Camera& camera, const RenderOptions& options) c
   const GridVolume& volume = scene_.grid();
   const std::vector<float> rays = slab_rays(steps_, camera, volume, tf_, lighting_, h_, options.threads);
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
-           axis_->size(), axis_->lo(), axis_->scale(), 0, 0, 0, 0, 0, 0};
+           axis_->size(), axis_->lo(), axis_->scale(), 0, 0, 0, 0, 0, 0, empty_->on,
+           {empty_->dims[0], empty_->dims[1], empty_->dims[2]}};
   if (shading_) {
     p.lit = lighting_.interpolated() ? 2 : 1;
     p.ka = shading_->ka, p.kd = shading_->kd, p.ks = shading_->ks;

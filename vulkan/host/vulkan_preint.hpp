@@ -53,6 +53,7 @@ class VulkanPreint final : public VulkanGridRenderer {
   FloatSampler sampler_;
   std::unique_ptr<detail::FloatShading> float_shading_;
   detail::FloatLighting lighting_;  // as the CPU's float march lights its last slabs
+  std::optional<GpuEmptySpace> empty_;   // the macro cells the CPU would leap over
   std::optional<ComputeKernel> kernel_;  // made once the arrays are on the device
   // The kernel's inputs in binding order, the rays' slot null.
   Bindings inputs() const;

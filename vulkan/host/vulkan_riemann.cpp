@@ -4,6 +4,8 @@
 #include <cstdint>
 
 #include "integrators/ray_steps.hpp"  // world_step
+#include "vri/integrators/fast_path.hpp"
+#include "vri/tables/zero_opacity.hpp"
 #include "pixel_kernel.hpp"
 #include "ray_setup.hpp"
 #include "vri/transfer/float_transfer_function.hpp"
@@ -24,7 +26,9 @@ struct Params {
   std::int32_t tf_bins, segments;
   std::int32_t lit;
   float ka, kd, ks, shininess, flat;
+  std::int32_t skip, macro_dims[3];
 };
+static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
 }  // namespace
 
@@ -36,6 +40,9 @@ VulkanRiemann::VulkanRiemann(std::shared_ptr<const VulkanDevice> device, const S
     shader_.emplace(scene.lighting, scene.grid());
     shading_.emplace(device_, scene.lighting, *shader_, scene.grid());
   }
+  // The CPU's classification (riemann.cpp): what it would leap over.
+  const detail::Skipping skipping(scene.grid(), ZeroOpacity(scene.transfer_function), scene.method.fast, "riemann");
+  empty_.emplace(device_, scene.grid(), skipping.space());
   const Bindings b = inputs();
   kernel_.emplace(device_, kSpirv, static_cast<int>(b.list().size()) + 1, sizeof(Params), b.split_arrays());
 }
@@ -44,7 +51,7 @@ VulkanRiemann::VulkanRiemann(std::shared_ptr<const VulkanDevice> device, const S
 Bindings VulkanRiemann::inputs() const {
   Bindings b;
   b.add(volume_.samples).add(shading_ ? shading_->gradients : volume_.samples);
-  return std::move(b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */));
+  return std::move(b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */).add(&empty_->bits));
 }
 
 Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) const {
@@ -52,7 +59,8 @@ Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) 
   const GridVolume& volume = scene_.grid();
   const std::vector<float> rays = riemann_rays(camera, volume, h_, scene_.method.jitter, options.threads);
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination), static_cast<float>(h_), tf_.lo,
-           tf_.scale, FloatTransferFunction::kBins, tf_.segments, 0, 0, 0, 0, 0, 0};
+           tf_.scale, FloatTransferFunction::kBins, tf_.segments, 0, 0, 0, 0, 0, 0, empty_->on,
+           {empty_->dims[0], empty_->dims[1], empty_->dims[2]}};
   if (shading_) {
     p.lit = 1;
     p.ka = shading_->ka, p.kd = shading_->kd, p.ks = shading_->ks;

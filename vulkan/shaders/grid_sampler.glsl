@@ -23,6 +23,7 @@ float voxel(uint i) {
 struct Cell {
   uint offset;
   vec3 f;
+  ivec3 index;  // the cell's lower corner (clamped to the last cell)
 };
 
 // The cell of grid position (x, y, z) in double-float, clamped as FloatSampler::cell.
@@ -45,6 +46,7 @@ Cell grid_cell(DF u[3]) {
     c.f[a] = f;
   }
   c.offset = uint(idx[0]) + p.sy * uint(idx[1]) + p.sz * uint(idx[2]);
+  c.index = ivec3(idx[0], idx[1], idx[2]);
   return c;
 }
 

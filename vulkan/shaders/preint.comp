@@ -13,7 +13,8 @@
 // preint1; full, middle and back for preint2, lit_slab.hpp). The last,
 // partial slab (shorter than STEPS steps) is integrated exactly on the host
 // as STEPS sub-slabs, as on the CPU (last_slabs), and arrives with the ray
-// (host/ray_setup.cpp).
+// (host/ray_setup.cpp). Slabs inside empty macro cells are leapt over
+// (empty_space.glsl).
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 
@@ -24,6 +25,8 @@ layout(push_constant) uniform Params {
   float table_lo, table_scale;
   int lit;  // 0: unlit, 1: sampled, 2: interpolated
   float ka, kd, ks, shininess, flat_threshold;
+  int skip;           // empty-space skipping: 1 on
+  int macro_x, macro_y, macro_z;  // macro cells per axis (ints: an ivec3 would sit on 16 bytes)
 } p;
 
 #include "split_array.glsl"
@@ -38,7 +41,8 @@ SPLIT_INPUT(float, gradients, 16, 2u, 4)  // lit only
 // the number of whole slabs (int bits), the last STEPS sub-slabs'
 // premultiplied (r, g, b, alpha), the direction (x, y, z).
 layout(std430, binding = 20) readonly buffer Rays { float r[]; } rays;
-layout(std430, binding = 21) writeonly buffer Image { vec4 px[]; } image;
+layout(std430, binding = 21) readonly buffer EmptyCells { uint bits[]; } empty_cells;
+layout(std430, binding = 22) writeonly buffer Image { vec4 px[]; } image;
 
 vec4 entry_of(int which, uint e) { return which == 0 ? table_at(e) : which == 1 ? weighted1_at(e) : weighted2_at(e); }
 
@@ -52,19 +56,23 @@ const uint kRayFloats = 16u + 4u * STEPS;
 
 DF u0[3], du[3];
 vec3 d;
+#include "empty_space.glsl"
 
 struct Sample {
+  float exit;  // in an empty macro cell: the parameter just short of its exit (macro_exit); else -1
   Place place;
   vec3 g;   // lit: the gradient
   Terms t;  // interpolated: the terms
 };
 
-Sample sample_at(int i) {
+// `front`: the sample may start a slab (its leap is found).
+Sample sample_at(int i, bool front) {
   DF u[3];
   const DF k = DF(float(i), 0.0);
   for (int a = 0; a < 3; ++a) u[a] = df_add(u0[a], df_mul(k, du[a]));
   const Cell cell = grid_cell(u);
   Sample out_s;
+  out_s.exit = front && macro_empty(cell) ? macro_exit(cell) : -1.0;
   out_s.place = place(interpolate(cell));
   out_s.g = vec3(0.0);
   out_s.t = Terms(0.0, 0.0);
@@ -125,23 +133,37 @@ void main() {
   precise vec4 C = vec4(0.0);
   precise float T = 1.0;
   if (full >= 0) {  // -1: the ray misses the volume
-    Sample front = sample_at(0);
-    for (int k = 0; k < full; ++k) {
+    // Each turn takes the samples of one slab after `front` and composites
+    // it - or, where the front lies in an empty macro cell, leaps: the slabs
+    // with all their samples in it (up to floor(exit)) read only zero
+    // entries, and the turn takes the samples of the slab that ends at the
+    // new front instead, without compositing. So every ray samples at the
+    // same places in the code in every turn (SIMD lanes stay together).
+    Sample front = sample_at(0, true);
+    for (int k = 0; k < full;) {  // `front` is slab k's
       if (T < p.termination) break;
+      int to = k + 1;
+      bool composite = true;
+      if (front.exit >= 0.0) {
+        const int next = int(floor(front.exit)) / STEPS;
+        if (next >= full) break;
+        if (next > k) to = next, composite = false;
+      }
 #if STEPS == 1
-      const Sample back = sample_at(k + 1);
-      const vec4 v = slab(front, back);
+      const Sample back = sample_at(to, true);
+      const vec4 v = composite ? slab(front, back) : vec4(0.0);
 #else
-      const Sample middle = sample_at(2 * k + 1), back = sample_at(2 * k + 2);
-      const vec4 v = slab(front, middle, back);
+      const Sample middle = sample_at(2 * to - 1, false), back = sample_at(2 * to, true);
+      const vec4 v = composite ? slab(front, middle, back) : vec4(0.0);
 #endif
       C += T * v;
       T *= 1.0 - v.a;
       front = back;
+      k = to;
     }
     if (!(T < p.termination))
-      for (uint i = 0u; i < STEPS; ++i) {
-        const uint at = r + tail + 4u * i;
+      for (uint k = 0u; k < STEPS; ++k) {
+        const uint at = r + tail + 4u * k;
         C += T * vec4(rays.r[at], rays.r[at + 1u], rays.r[at + 2u], 0.0);
         T *= 1.0 - rays.r[at + 3u];
       }

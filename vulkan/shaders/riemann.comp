@@ -8,6 +8,7 @@
 // falls below the termination threshold. The host sets up each ray in double
 // (clipping, sample count, the last step) exactly as the CPU does
 // (vulkan/host/ray_setup.cpp), so only the per-sample float roundings differ.
+// Samples in empty macro cells are leapt over (empty_space.glsl).
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 
@@ -19,6 +20,8 @@ layout(push_constant) uniform Params {
   int tf_bins, segments;
   int lit;  // 0: unlit; 1: each sample lit
   float ka, kd, ks, shininess, flat_threshold;
+  int skip;           // empty-space skipping: 1 on
+  int macro_x, macro_y, macro_z;  // macro cells per axis (ints: an ivec3 would sit on 16 bytes)
 } p;
 
 #include "split_array.glsl"
@@ -30,13 +33,17 @@ layout(std430, binding = 9) readonly buffer TfBins { int first[]; } bins;
 // lo x3), o (hi, lo), o of the last step (hi, lo), h_k of the last step,
 // sample count, the direction (x, y, z).
 layout(std430, binding = 10) readonly buffer Rays { float r[]; } rays;
-layout(std430, binding = 11) writeonly buffer Image { vec4 px[]; } image;
+layout(std430, binding = 11) readonly buffer EmptyCells { uint bits[]; } empty_cells;
+layout(std430, binding = 12) writeonly buffer Image { vec4 px[]; } image;
 
 #include "double_float.glsl"
 #include "exp_neg.glsl"
 #include "grid_sampler.glsl"
 #include "transfer_function.glsl"
 #include "shading.glsl"
+
+DF u0[3], du[3];
+#include "empty_space.glsl"
 
 const uint kRayFloats = 21u;
 
@@ -45,7 +52,6 @@ void main() {
   if (pixel >= p.pixels) return;
   const uint b = pixel * kRayFloats;
   const int n = floatBitsToInt(rays.r[b + 17u]);
-  DF u0[3], du[3];
   for (int a = 0; a < 3; ++a) {
     u0[a] = DF(rays.r[b + a], rays.r[b + 3 + a]);
     du[a] = DF(rays.r[b + 6 + a], rays.r[b + 9 + a]);
@@ -63,6 +69,12 @@ void main() {
     DF u[3];
     for (int a = 0; a < 3; ++a) u[a] = df_add(u0[a], df_mul(at_k, du[a]));
     const Cell cell = grid_cell(u);
+    if (!last && macro_empty(cell)) {
+      // Samples k .. j lie in this empty macro cell; the next to look at is j + 1.
+      const int j = int(floor(macro_exit(cell) - o.hi));
+      k = max(k, min(j + 1, n - 1) - 1);
+      continue;
+    }
     vec4 v = tf_at(interpolate(cell));
     if (p.lit != 0) {
       if (v.w == 0.0) continue;  // adds exactly nothing: no gradient needed
