@@ -24,11 +24,12 @@ echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores ($(grep -m1 'model name
 device=$("$vri" devices | head -1)
 echo "# Vulkan device: $device"
 case "$device" in *llvmpipe*|*lavapipe*|*", CPU,"*) label="lavapipe (CPU emulation, not a GPU)";; *) label="GPU";; esac
-# The fastest render time of `vri render ARGS` over the repeats.
+# The fastest time of `vri COMMAND ARGS` over the repeats, as it reports it
+# ("... in T s (CPU ...)" for render, "... in T s -> ..." for table).
 best() {
   local t best=
   for _ in $(seq "$repeats"); do
-    t=$("$vri" render "$@" 2>&1 >/dev/null | sed -n "s/.* in \([0-9.e-]*\) s (CPU.*/\1/p")
+    t=$("$vri" "$@" 2>&1 >/dev/null | sed -n "s/.* in \([0-9.e-]*\) s [(-].*/\1/p")
     best=$(awk -v a="$t" -v b="${best:-$t}" 'BEGIN { print (a < b ? a : b) }')
   done
   echo "$best"
@@ -40,26 +41,17 @@ for scene in neghip bonsai; do
   for method in preint1 preint2 riemann adaptive; do
     args=(scenes/$scene.json --method "$method" --step 1 --width 512 --height 512)
     [ "$method" = adaptive ] && args+=(--strategy coupled --tolerance 1e-3)
-    cpu=$(best "${args[@]}" -o "$tmp/cpu.npy" --threads 2)
-    gpu=$(best "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
+    cpu=$(best render "${args[@]}" -o "$tmp/cpu.npy" --threads 2)
+    gpu=$(best render "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
     # Empty-space skipping off (adaptive skips transparent intervals its own way).
     march=-1
-    [ "$method" != adaptive ] && march=$(best "${args[@]}" -o "$tmp/march.npy" --backend vulkan --no-skip)
+    [ "$method" != adaptive ] && march=$(best render "${args[@]}" -o "$tmp/march.npy" --backend vulkan --no-skip)
     diff=$("$vri" compare "$tmp/gpu.npy" "$tmp/cpu.npy" --tolerance 1e-4 | awk 'NR > 1 { if ($4 > m) m = $4 } END { printf "%.1e", m }')
     awk -v s="$scene" -v m="$method" -v c="$cpu" -v g="$gpu" -v n="$march" -v d="$diff" \
       'BEGIN { printf "| %s | %s | %.1f | %.1f | %.2f | %s | %s |\n", s, m, 1000 * c, 1000 * g, c / g,
                n < 0 ? "—" : sprintf("%.1f", 1000 * n), d }'
   done
 done
-# The fastest build time of `vri table ARGS` over the repeats (as `vri table` reports it).
-best_table() {
-  local t best=
-  for _ in $(seq "$repeats"); do
-    t=$("$vri" table "$@" 2>&1 >/dev/null | sed -n "s/.* in \([0-9.e-]*\) s ->.*/\1/p")
-    best=$(awk -v a="$t" -v b="${best:-$t}" 'BEGIN { print (a < b ? a : b) }')
-  done
-  echo "$best"
-}
 echo
 echo "| table (bonsai's transfer function) | CPU s (2 threads) | Vulkan s ($label) | CPU / Vulkan | max difference |"
 echo "|---|---|---|---|---|"
@@ -68,8 +60,8 @@ for spec in "first order 256², sliced (Roettger & Ertl)|--size 256 --builder sl
   name=${spec%%|*}
   read -r -a args <<< "${spec#*|}"
   args=(--tf presets/bonsai.json "${args[@]}")
-  cpu=$(best_table "${args[@]}" -o "$tmp/cpu.npy")
-  gpu=$(best_table "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
+  cpu=$(best table "${args[@]}" -o "$tmp/cpu.npy")
+  gpu=$(best table "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
   diff=$(/usr/bin/python3 -c "import numpy as n; print('%.1e' % abs(n.load('$tmp/cpu.npy').astype(float) - n.load('$tmp/gpu.npy')).max())")
   awk -v s="$name" -v c="$cpu" -v g="$gpu" -v d="$diff" \
     'BEGIN { printf "| %s | %.3f | %.3f | %.2f | %s |\n", s, c, g, c / g, d }'

@@ -50,34 +50,28 @@ class VulkanScene : public ::testing::TestWithParam<std::string> {
     apply_overrides(scene, o);
     return scene;
   }
+
+  // `method` (a pre-integrated one) with a table of `table_size` a side
+  // against the CPU: plain, with early termination and, lit, in the other
+  // lighting mode too.
+  void expect_preint_matches(const char* method, int table_size) const {
+    Scene scene = scene_with(method);
+    scene.method.table_size = table_size;
+    EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << "plain";
+    scene.method.fast.termination = 0.05;
+    EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << "termination";
+    if (scene.lighting.enabled) {
+      scene.lighting.mode = scene.lighting.mode == "sampled" ? "interpolated" : "sampled";
+      EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << scene.lighting.mode;
+    }
+    EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
+  }
 };
 
-TEST_P(VulkanScene, Preint1MatchesTheCpuFloatPath) {
-  Scene scene = scene_with("preint1");
-  scene.method.table_size = 128;
-  EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << "plain";
-  scene.method.fast.termination = 0.05;
-  EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << "termination";
-  if (scene.lighting.enabled) {  // the other lighting mode too
-    scene.lighting.mode = scene.lighting.mode == "sampled" ? "interpolated" : "sampled";
-    EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << scene.lighting.mode;
-  }
-  EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
-}
+TEST_P(VulkanScene, Preint1MatchesTheCpuFloatPath) { expect_preint_matches("preint1", 128); }
 
 // Second order: the 3D table at 48 entries a side (its build dominates).
-TEST_P(VulkanScene, Preint2MatchesTheCpuFloatPath) {
-  Scene scene = scene_with("preint2");
-  scene.method.table_size = 48;
-  EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << "plain";
-  scene.method.fast.termination = 0.05;
-  EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << "termination";
-  if (scene.lighting.enabled) {
-    scene.lighting.mode = scene.lighting.mode == "sampled" ? "interpolated" : "sampled";
-    EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << scene.lighting.mode;
-  }
-  EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
-}
+TEST_P(VulkanScene, Preint2MatchesTheCpuFloatPath) { expect_preint_matches("preint2", 48); }
 
 // adaptive (coupled, decoupled) takes its step decisions on float error
 // estimates, the CPU on double ones: a decision can flip where an estimate

@@ -49,6 +49,11 @@ GpuShading::GpuShading(std::shared_ptr<const VulkanDevice> device, const Lightin
       flat(static_cast<float>(shader.flat_threshold())) {
 }
 
+ShadingParams shading_params(const std::optional<GpuShading>& s, int mode) {
+  if (!s) return {};
+  return {mode, s->ka, s->kd, s->ks, s->shininess, s->flat};
+}
+
 namespace {
 
 std::vector<std::uint32_t> empty_bits(const GridVolume& volume, const EmptySpace* space) {

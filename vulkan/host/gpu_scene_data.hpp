@@ -5,6 +5,7 @@
 // (transfer_function.glsl).
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "gpu_array.hpp"
 #include "gpu_buffer.hpp"
@@ -30,6 +31,14 @@ struct GpuShading {
   GpuArray gradients;
   float ka, kd, ks, shininess, flat;
 };
+
+// The shaders' lighting push constants (shading.glsl: `int lit; float ka,
+// kd, ks, shininess, flat_threshold;`): lit 0 without `shading`, else `mode`.
+struct ShadingParams {
+  std::int32_t lit = 0;
+  float ka = 0, kd = 0, ks = 0, shininess = 0, flat = 0;
+};
+ShadingParams shading_params(const std::optional<GpuShading>& shading, int mode);
 
 // Empty-space skipping on the device (shaders/empty_space.glsl): the macro
 // cells (macro_cells.hpp, 8 grid cells a side) the CPU classified against the

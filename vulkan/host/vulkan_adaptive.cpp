@@ -22,8 +22,7 @@ struct Params {
   GridParams grid;
   float tf_lo, tf_scale;
   std::int32_t tf_bins, segments;
-  std::int32_t lit;
-  float ka, kd, ks, shininess, flat;
+  ShadingParams shading;  // lit 1: each sample lit
   float tolerance, h0, hmin, hmax;  // world units
   std::int32_t coupled;
 };
@@ -68,17 +67,12 @@ Image VulkanAdaptive::render(const Camera& camera, const RenderOptions& options)
            tf_.scale,
            FloatTransferFunction::kBins,
            tf_.segments,
-           0, 0, 0, 0, 0, 0,
+           shading_params(shading_, 1),
            static_cast<float>(m.tolerance),
            static_cast<float>(m.h0 * vu),
            static_cast<float>(m.hmin * vu),
            static_cast<float>(m.hmax * vu),
            parse_adaptive_strategy(m.strategy) == AdaptiveStrategy::Coupled ? 1 : 0};
-  if (shading_) {
-    p.lit = 1;
-    p.ka = shading_->ka, p.kd = shading_->kd, p.ks = shading_->ks;
-    p.shininess = shading_->shininess, p.flat = shading_->flat;
-  }
   return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kAdaptiveRayFloats,
                     p.grid, &p);
 }

@@ -28,8 +28,7 @@ struct Params {
   GridParams grid;
   std::int32_t table_n;
   float table_lo, table_scale;
-  std::int32_t lit;  // 0 unlit, 1 sampled, 2 interpolated
-  float ka, kd, ks, shininess, flat;
+  ShadingParams shading;  // lit 1: sampled, 2: interpolated
   std::int32_t skip, macro_dims[3];
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
@@ -116,13 +115,8 @@ Image VulkanPreint::render(const Camera& camera, const RenderOptions& options) c
   const GridVolume& volume = scene_.grid();
   const std::vector<float> rays = slab_rays(steps_, camera, volume, tf_, lighting_, h_, options.threads);
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
-           axis_->size(), axis_->lo(), axis_->scale(), 0, 0, 0, 0, 0, 0, empty_->on,
-           {empty_->dims[0], empty_->dims[1], empty_->dims[2]}};
-  if (shading_) {
-    p.lit = lighting_.interpolated() ? 2 : 1;
-    p.ka = shading_->ka, p.kd = shading_->kd, p.ks = shading_->ks;
-    p.shininess = shading_->shininess, p.flat = shading_->flat;
-  }
+           axis_->size(), axis_->lo(), axis_->scale(), shading_params(shading_, lighting_.interpolated() ? 2 : 1),
+           empty_->on, {empty_->dims[0], empty_->dims[1], empty_->dims[2]}};
   return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, slab_ray_floats(steps_),
                     p.grid, &p);
 }

@@ -24,8 +24,7 @@ struct Params {
   float h;
   float tf_lo, tf_scale;
   std::int32_t tf_bins, segments;
-  std::int32_t lit;
-  float ka, kd, ks, shininess, flat;
+  ShadingParams shading;  // lit 1: each sample lit
   std::int32_t skip, macro_dims[3];
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
@@ -59,13 +58,8 @@ Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) 
   const GridVolume& volume = scene_.grid();
   const std::vector<float> rays = riemann_rays(camera, volume, h_, scene_.method.jitter, options.threads);
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination), static_cast<float>(h_), tf_.lo,
-           tf_.scale, FloatTransferFunction::kBins, tf_.segments, 0, 0, 0, 0, 0, 0, empty_->on,
+           tf_.scale, FloatTransferFunction::kBins, tf_.segments, shading_params(shading_, 1), empty_->on,
            {empty_->dims[0], empty_->dims[1], empty_->dims[2]}};
-  if (shading_) {
-    p.lit = 1;
-    p.ka = shading_->ka, p.kd = shading_->kd, p.ks = shading_->ks;
-    p.shininess = shading_->shininess, p.flat = shading_->flat;
-  }
   return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kRiemannRayFloats,
                     p.grid, &p);
 }
