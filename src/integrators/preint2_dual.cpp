@@ -13,11 +13,6 @@ namespace vri {
 
 namespace {
 
-double longest_chord(const GridVolume& volume) {
-  const Vec3 sp = volume.spacing();
-  return std::sqrt(3.0) * std::max({sp[0], sp[1], sp[2]});
-}
-
 // The shader of a lit scene, after checking the mode (before any table is built).
 std::optional<HeadlightShader> dual_shader(const Lighting& lighting, const GridVolume& volume) {
   if (!lighting.enabled) return std::nullopt;
@@ -58,6 +53,11 @@ Rgba march_cells(const GridVolume& volume, const Ray& ray, const detail::Leap& l
 
 }  // namespace
 
+double Preint2DualIntegrator::max_slab_length(const GridVolume& volume) {
+  const Vec3 sp = volume.spacing();
+  return std::sqrt(3.0) * std::max({sp[0], sp[1], sp[2]});
+}
+
 Preint2DualIntegrator::Preint2DualIntegrator(const GridVolume& volume, const TransferFunction& tf, int table_size,
                                              int iterations, const std::string& builder, const Lighting& lighting,
                                              const FastPath& fast)
@@ -69,9 +69,9 @@ Preint2DualIntegrator::Preint2DualIntegrator(const GridVolume& volume, const Tra
   const DiscreteTf& d = tf_;
   const auto make = make_second_order_builder(builder);
   if (shader_ && lighting.mode == "interpolated")
-    weighted_.emplace(build_second_order_weighted_length_tables(*make, d, kLengths, longest_chord(volume), iterations));
+    weighted_.emplace(build_second_order_weighted_length_tables(*make, d, kLengths, max_slab_length(volume), iterations));
   else
-    table_.emplace(build_second_order_length_table(*make, d, kLengths, longest_chord(volume), iterations));
+    table_.emplace(build_second_order_length_table(*make, d, kLengths, max_slab_length(volume), iterations));
   if (!fast.float_math) return;
   if (weighted_)
     float_table_ = std::make_unique<detail::DualFloatLookup>(weighted_->full, &weighted_->middle, &weighted_->back);

@@ -61,6 +61,7 @@ Scene with(Scene scene, const char* method, int table_size, int width, int heigh
   scene.method.name = method;
   scene.method.step = 0.7;
   scene.method.table_size = table_size;
+  scene.method.table_size_given = true;
   scene.camera.width = width;
   scene.camera.height = height;
   return scene;
@@ -81,7 +82,8 @@ TEST(SplitArrays, UnlitScenesMatchTheCpu) {
 }
 
 // The lit Marschner-Lobb scene: its gradient field (41^3 x 12 bytes) in four
-// parts, preint2's three weighted 40^3 tables in four each.
+// parts, preint2's three weighted 40^3 tables in four each, preint2-dual's
+// 32 x 12^3 likewise.
 TEST(SplitArrays, LitScenesMatchTheCpu) {
   Scene scene = load_scene(test::source_path("scenes/marschner_lobb_lit.json"));
   for (const char* mode : {"sampled", "interpolated"}) {
@@ -89,6 +91,8 @@ TEST(SplitArrays, LitScenesMatchTheCpu) {
     EXPECT_LE(test::gpu_against_cpu(with(scene, "riemann", 256, 48, 40)).max, 1e-4) << mode;
     EXPECT_LE(test::gpu_against_cpu(with(scene, "preint1", 128, 48, 40)).max, 1e-4) << mode;
     EXPECT_LE(test::gpu_against_cpu(with(scene, "preint2", 40, 48, 40)).max, 1e-4) << mode;
+    // 32 lengths of 12^3: four parts each.
+    EXPECT_LE(test::gpu_against_cpu(with(scene, "preint2-dual", 12, 48, 40)).max, 1e-4) << mode;
   }
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }

@@ -24,9 +24,15 @@ GpuArray::GpuArray(std::shared_ptr<const VulkanDevice> device, std::span<const s
   upload(data);
 }
 
-void GpuArray::upload(std::span<const std::byte> data) {
-  for (std::size_t k = 0; k < parts_.size() && k * part_bytes_ < data.size(); ++k)
-    parts_[k]->upload(data.subspan(k * part_bytes_, std::min(parts_[k]->size(), data.size() - k * part_bytes_)));
+void GpuArray::upload(std::span<const std::byte> data, std::size_t offset) {
+  if (offset + data.size() > bytes_) throw Error("vulkan: an upload past the end of an array");
+  while (!data.empty()) {  // part by part
+    const std::size_t k = offset / part_bytes_, at = offset % part_bytes_;
+    const std::size_t n = std::min(data.size(), parts_[k]->size() - at);
+    parts_[k]->upload(data.first(n), at);
+    data = data.subspan(n);
+    offset += n;
+  }
 }
 
 std::array<const GpuBuffer*, GpuArray::kParts> GpuArray::bindings() const {

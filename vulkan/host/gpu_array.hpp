@@ -30,7 +30,7 @@ class GpuArray {
   // The buffers for a SPLIT_INPUT's or SPLIT_OUTPUT's kParts bindings: the
   // parts, the last one repeated where there are fewer.
   std::array<const GpuBuffer*, kParts> bindings() const;
-  void upload(std::span<const std::byte> data);     // to the first data.size() bytes
+  void upload(std::span<const std::byte> data, std::size_t offset = 0);  // to bytes offset .. offset + data.size()
   void download(std::span<std::byte> out) const;  // the first out.size() bytes
 
  private:

@@ -75,21 +75,24 @@ namespace {
 
 // The host-visible memory `memory` mapped for the duration of `use(pointer)`.
 template <class Use>
-void mapped(const Api& api, VkDevice device, VkDeviceMemory memory, std::size_t bytes, Use&& use) {
+void mapped(const Api& api, VkDevice device, VkDeviceMemory memory, std::size_t bytes, Use&& use,
+            std::size_t offset = 0) {
   void* p = nullptr;
-  check(api.vkMapMemory(device, memory, 0, bytes, 0, &p), "vkMapMemory");
+  check(api.vkMapMemory(device, memory, offset, bytes, 0, &p), "vkMapMemory");
   use(static_cast<std::byte*>(p));
   api.vkUnmapMemory(device, memory);
 }
 
 }  // namespace
 
-void GpuBuffer::upload(std::span<const std::byte> data) {
-  if (data.size() > bytes_) throw Error("vulkan: upload larger than its buffer");
+void GpuBuffer::upload(std::span<const std::byte> data, std::size_t offset) {
+  if (offset > bytes_ || data.size() > bytes_ - offset) throw Error("vulkan: upload larger than its buffer");
   if (data.empty()) return;
   const Api& api = device_->api();
   if (host_visible_) {
-    mapped(api, device_->device(), memory_, data.size(), [&](std::byte* p) { std::memcpy(p, data.data(), data.size()); });
+    mapped(
+        api, device_->device(), memory_, data.size(), [&](std::byte* p) { std::memcpy(p, data.data(), data.size()); },
+        offset);
     return;
   }
   Allocation staging = allocate(VK_BUFFER_USAGE_TRANSFER_SRC_BIT, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
@@ -98,7 +101,7 @@ void GpuBuffer::upload(std::span<const std::byte> data) {
     mapped(api, device_->device(), staging.memory, data.size(),
            [&](std::byte* p) { std::memcpy(p, data.data(), data.size()); });
     device_->submit([&](VkCommandBuffer cb) {
-      const VkBufferCopy region{0, 0, data.size()};
+      const VkBufferCopy region{0, offset, data.size()};
       api.vkCmdCopyBuffer(cb, staging.buffer, buffer_, 1, &region);
     });
   } catch (...) {

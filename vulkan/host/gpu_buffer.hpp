@@ -25,9 +25,9 @@ class GpuBuffer {
 
   VkBuffer handle() const { return buffer_; }
   std::size_t size() const { return bytes_; }
-  // Copies `data` (at most size() bytes) to the buffer's start / the
-  // buffer's first out.size() bytes out.
-  void upload(std::span<const std::byte> data);
+  // Copies `data` to the buffer's bytes from `offset` on / the buffer's
+  // first out.size() bytes out.
+  void upload(std::span<const std::byte> data, std::size_t offset = 0);
   void download(std::span<std::byte> out) const;
 
  private:

@@ -84,13 +84,13 @@ std::vector<float> riemann_rays(const Camera& camera, const GridVolume& volume, 
   return out;
 }
 
-std::vector<float> adaptive_rays(const Camera& camera, const GridVolume& volume, int threads) {
+std::vector<float> entry_rays(const Camera& camera, const GridVolume& volume, int threads) {
   const int W = camera.width(), H = camera.height();
-  std::vector<float> out(static_cast<std::size_t>(W) * H * kAdaptiveRayFloats, 0.0f);
+  std::vector<float> out(static_cast<std::size_t>(W) * H * kEntryRayFloats, 0.0f);
   const FloatSampler sampler(volume);
   for_rows(H, threads, [&](int y) {
     for (int x = 0; x < W; ++x) {
-      float* r = out.data() + (static_cast<std::size_t>(y) * W + x) * kAdaptiveRayFloats;
+      float* r = out.data() + (static_cast<std::size_t>(y) * W + x) * kEntryRayFloats;
       const Ray ray = camera.ray(x, y);
       const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
       r[12] = -1;
@@ -100,8 +100,8 @@ std::vector<float> adaptive_rays(const Camera& camera, const GridVolume& volume,
         put(r + a, u0[a], 3);
         put(r + 6 + a, du[a], 3);
       }
-      r[12] = static_cast<float>(iv->length());
-      put_direction(r + 13, ray);
+      put(r + 12, iv->length(), 1);
+      put_direction(r + 14, ray);
     }
   });
   return out;

@@ -25,13 +25,13 @@ inline constexpr int kRiemannRayFloats = 21;
 std::vector<float> riemann_rays(const Camera& camera, const GridVolume& volume, double h,
                                 std::optional<std::uint64_t> jitter, int threads);
 
-// adaptive's ray, 16 floats (vulkan/shaders/adaptive.comp): u0 hi x3, lo x3
-// (the entry into the box, grid units); du hi x3, lo x3 (grid units per
-// world unit along the ray); the length inside the box (-1: the ray misses
-// it); the direction in float.
-inline constexpr int kAdaptiveRayFloats = 16;
+// A ray by its entry into the box, 17 floats (adaptive.comp,
+// preint2_dual.comp): u0 hi x3, lo x3 (the entry, grid units); du hi x3, lo
+// x3 (grid units per world unit along the ray); the length inside the box,
+// hi and lo (-1: the ray misses it); the direction in float.
+inline constexpr int kEntryRayFloats = 17;
 
-std::vector<float> adaptive_rays(const Camera& camera, const GridVolume& volume, int threads);
+std::vector<float> entry_rays(const Camera& camera, const GridVolume& volume, int threads);
 
 // The ray of preint1 (steps 1) or preint2 (steps 2), slab_ray_floats(steps)
 // floats (vulkan/shaders/preint.comp): u0 hi x3, lo x3; du hi x3, lo x3; the

@@ -61,7 +61,7 @@ Image VulkanAdaptive::render(const Camera& camera, const RenderOptions& options)
   const GridVolume& volume = scene_.grid();
   const MethodSpec& m = scene_.method;
   const double vu = volume.voxel_unit();
-  const std::vector<float> rays = adaptive_rays(camera, volume, options.threads);
+  const std::vector<float> rays = entry_rays(camera, volume, options.threads);
   Params p{grid_params(*device_, volume, volume_.type, 0),
            tf_.lo,
            tf_.scale,
@@ -73,7 +73,7 @@ Image VulkanAdaptive::render(const Camera& camera, const RenderOptions& options)
            static_cast<float>(m.hmin * vu),
            static_cast<float>(m.hmax * vu),
            parse_adaptive_strategy(m.strategy) == AdaptiveStrategy::Coupled ? 1 : 0};
-  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kAdaptiveRayFloats,
+  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kEntryRayFloats,
                     p.grid, &p);
 }
 

@@ -10,6 +10,7 @@
 #include "vulkan_adaptive.hpp"
 #include "vulkan_device.hpp"
 #include "vulkan_preint.hpp"
+#include "vulkan_preint2_dual.hpp"
 #include "vulkan_riemann.hpp"
 #include "vulkan_table_builders.hpp"
 
@@ -21,13 +22,14 @@ std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene)
   const std::string& m = scene.method.name;
   if (!std::holds_alternative<GridVolume>(scene.volume))
     throw Error("--backend vulkan: tetrahedral meshes are not on the GPU yet (docs/GPU.md); use --backend cpu");
-  if (m != "riemann" && m != "preint1" && m != "preint2" && m != "adaptive")
+  if (m != "riemann" && m != "preint1" && m != "preint2" && m != "preint2-dual" && m != "adaptive")
     throw Error("--backend vulkan: method '" + m +
-                "' is not on the GPU yet; riemann, preint1, preint2 and adaptive are (docs/GPU.md)");
+                "' is not on the GPU yet; riemann, preint1, preint2, preint2-dual and adaptive are (docs/GPU.md)");
   if (!scene.method.fast.float_math)
     throw Error("--backend vulkan: the GPU computes in float; --double needs --backend cpu");
   if (m == "riemann") return std::make_unique<vulkan::VulkanRiemann>(vulkan::VulkanDevice::shared(), scene);
   if (m == "adaptive") return std::make_unique<vulkan::VulkanAdaptive>(vulkan::VulkanDevice::shared(), scene);
+  if (m == "preint2-dual") return std::make_unique<vulkan::VulkanPreint2Dual>(vulkan::VulkanDevice::shared(), scene);
   return std::make_unique<vulkan::VulkanPreint>(vulkan::VulkanDevice::shared(), scene);
 }
 

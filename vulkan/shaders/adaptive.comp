@@ -34,9 +34,9 @@ SPLIT_INPUT(uint, volume, 0, 2u, 0)
 SPLIT_INPUT(float, gradients, 4, 2u, 1)  // lit only
 layout(std430, binding = 8) readonly buffer Tf { float v[]; } tf;
 layout(std430, binding = 9) readonly buffer TfBins { int first[]; } bins;
-// Per ray (ray_setup.hpp, kAdaptiveRayFloats): u0 (hi x3, lo x3), du per
-// world unit (hi x3, lo x3), the length inside the box (< 0: the ray misses
-// it), the direction (x, y, z).
+// Per ray (ray_setup.hpp, kEntryRayFloats): u0 (hi x3, lo x3), du per world
+// unit (hi x3, lo x3), the length inside the box (hi, lo; < 0: the ray
+// misses it), the direction (x, y, z).
 layout(std430, binding = 10) readonly buffer Rays { float r[]; } rays;
 layout(std430, binding = 11) writeonly buffer Image { vec4 px[]; } image;
 
@@ -46,7 +46,7 @@ layout(std430, binding = 11) writeonly buffer Image { vec4 px[]; } image;
 #include "transfer_function.glsl"
 #include "shading.glsl"
 
-const uint kRayFloats = 16u;
+const uint kRayFloats = 17u;
 
 DF u0[3], du[3];
 vec3 d;
@@ -160,7 +160,7 @@ void main() {
     du[a] = DF(rays.r[r + 6 + a], rays.r[r + 9 + a]);
   }
   const float t_end = rays.r[r + 12u];
-  d = vec3(rays.r[r + 13u], rays.r[r + 14u], rays.r[r + 15u]);
+  d = vec3(rays.r[r + 14u], rays.r[r + 15u], rays.r[r + 16u]);
   Control inner = Control(p.h0, true);
   outer = Control(p.h0, true);
   for (float t = 0.0; t < t_end;) {

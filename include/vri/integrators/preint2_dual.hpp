@@ -49,6 +49,9 @@ class Preint2DualIntegrator final : public Integrator {
  public:
   static constexpr int kDefaultTableSize = 64;
   static constexpr int kLengths = 32;
+  // The table's longest slab: the longest chord of a cell, sqrt(3) times the
+  // largest grid spacing.
+  static double max_slab_length(const GridVolume& volume);
 
   // Throws vri::Error when the table would exceed kMaxSecondOrderEntries or
   // the iterations are out of range (see preint2.hpp for the builder), or for
