@@ -8,9 +8,9 @@
 # upload or the table build), with the largest difference between the two
 # images (adaptive: step decisions in float against double, docs/GPU.md)
 # and the GPU's time without empty-space skipping (--no-skip);
-# then the build time of the 256² sliced and 256³ second-order tables as
-# `vri table` reports it (on the GPU: the transfer function up, the
-# dispatch, the table back). Prints the machine and the Vulkan device
+# then the build time of the 256² sliced and incremental and the 256³
+# second-order tables as `vri table` reports it (on the GPU: the transfer
+# function up, the dispatches, the table back). Prints the machine and the Vulkan device
 # first: on a machine without a GPU that device is lavapipe, Mesa's CPU
 # emulation, and its times are labelled so.
 set -euo pipefail
@@ -56,6 +56,7 @@ echo
 echo "| table (bonsai's transfer function) | CPU s (2 threads) | Vulkan s ($label) | CPU / Vulkan | max difference |"
 echo "|---|---|---|---|---|"
 for spec in "first order 256², sliced (Roettger & Ertl)|--size 256 --builder sliced" \
+            "first order 256², incremental (Lum et al.)|--size 256 --builder incremental" \
             "second order 256³, fast (El Hajjar et al.)|--size 256 --order 2 --builder fast"; do
   name=${spec%%|*}
   read -r -a args <<< "${spec#*|}"

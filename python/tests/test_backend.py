@@ -72,7 +72,9 @@ def test_tables_built_on_the_gpu_match_the_cpu(root):
     gpu2 = vri.table(tf, size=32, order=2, length=2.0, backend="vulkan")
     assert np.abs(gpu2 - cpu2).max() <= 1e-6
     with pytest.raises(ValueError, match="not on the GPU; sliced"):
-        vri.table(tf, size=32, builder="incremental", backend="vulkan")
+        vri.table(tf, size=32, builder="brute", backend="vulkan")
+    inc = vri.table(tf, size=64, length=2.0, builder="incremental", backend="vulkan")
+    assert np.abs(inc - vri.table(tf, size=64, length=2.0)).max() <= 2e-6
     with pytest.raises(ValueError, match="builds in fp32"):
         vri.table(tf, size=32, accumulation="8bit", backend="vulkan")
 

@@ -61,7 +61,7 @@ TEST(VulkanCli, TableBackend) {
   const ProcessResult second = run("table" + tf + " --order 2 --backend vulkan -o " + (dir / "g2.npy").string(), dir);
   ASSERT_EQ(second.code, 0) << second.err;
   EXPECT_NE(second.err.find("64x64x64 table with 'fast (vulkan)'"), std::string::npos) << second.err;
-  for (const char* bad : {" --builder incremental --backend vulkan", " --accumulation 12bit --backend vulkan",
+  for (const char* bad : {" --builder brute --backend vulkan", " --accumulation 12bit --backend vulkan",
                           " --order 2 --builder plain --backend vulkan", " --backend metal"}) {
     const ProcessResult r = run("table" + tf + bad + " -o " + (dir / "x.npy").string(), dir);
     EXPECT_EQ(r.code, 1) << bad;

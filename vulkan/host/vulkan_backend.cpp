@@ -34,9 +34,10 @@ std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene)
 }
 
 std::unique_ptr<TableBuilder> make_vulkan_table_builder(const std::string& builder, int steps) {
+  if (builder == "incremental") return std::make_unique<vulkan::VulkanIncrementalBuilder>(vulkan::VulkanDevice::shared());
   if (builder != "sliced")
     throw Error("--backend vulkan: the first-order builder '" + builder +
-                "' is not on the GPU; sliced (Roettger & Ertl) is (docs/GPU.md)");
+                "' is not on the GPU; sliced (Roettger & Ertl) and incremental (Lum et al.) are (docs/GPU.md)");
   return std::make_unique<vulkan::VulkanSlicedBuilder>(vulkan::VulkanDevice::shared(), steps);
 }
 

@@ -2,7 +2,9 @@
 
 #include <cstdint>
 #include <span>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "gpu_array.hpp"
 #include "gpu_discrete_tf.hpp"
@@ -17,6 +19,15 @@ namespace {
 const std::uint32_t kSlicedSpirv[] = {
 #include "sliced_table.spv.inc"
 };
+const std::uint32_t kIncrementalPiecesSpirv[] = {
+#include "incremental_pieces.spv.inc"
+};
+const std::uint32_t kIncrementalChainsSpirv[] = {
+#include "incremental_chains.spv.inc"
+};
+const std::uint32_t kIncrementalJoinsSpirv[] = {
+#include "incremental_joins.spv.inc"
+};
 const std::uint32_t kSecondOrderSpirv[] = {
 #include "second_order_table.spv.inc"
 };
@@ -27,6 +38,14 @@ struct SlicedParams {
   float dl;
   std::uint32_t base;
 };
+
+struct IncrementalParams {
+  std::uint32_t part_shift;
+  std::int32_t table_n;
+  float slab_length;
+};
+// incremental_table.comp's bindings: the table (four), the transfer function (three), six scratch arrays.
+constexpr int kIncrementalBindings = GpuArray::kParts + 3 + 6;
 
 struct SecondOrderParams {
   std::uint32_t part_shift;
@@ -54,6 +73,35 @@ PreintegrationTable VulkanSlicedBuilder::build(const DiscreteTf& tf, double leng
   Bindings b;
   b.add(entries).add(&on_device.samples).add(&on_device.sub_begin).add(&on_device.subs);
   kernel_.run(groups_of_64(n), static_cast<std::uint32_t>(n), b.list(), &p);
+  entries.download(std::as_writable_bytes(std::span<float>(table.entry(0, 0), floats)));
+  return table;
+}
+
+VulkanIncrementalBuilder::VulkanIncrementalBuilder(std::shared_ptr<const VulkanDevice> device)
+    : device_(std::move(device)),
+      pieces_(device_, kIncrementalPiecesSpirv, kIncrementalBindings, sizeof(IncrementalParams)),
+      chains_(device_, kIncrementalChainsSpirv, kIncrementalBindings, sizeof(IncrementalParams)),
+      joins_(device_, kIncrementalJoinsSpirv, kIncrementalBindings, sizeof(IncrementalParams)) {}
+
+PreintegrationTable VulkanIncrementalBuilder::build(const DiscreteTf& tf, double length) const {
+  check_slab_length(length);
+  const int n = tf.size();
+  PreintegrationTable table(tf.axis(), length);
+  const GpuDiscreteTf on_device(device_, tf);
+  const std::size_t floats = table.data().size();
+  const GpuArray entries(device_, floats * sizeof(float), "the pre-integration table");
+  const std::size_t scratch_bytes = static_cast<std::size_t>(n - 1) * (n - 1) * 4 * sizeof(float);
+  std::vector<std::unique_ptr<GpuBuffer>> scratch;
+  for (int i = 0; i < 6; ++i)
+    scratch.push_back(std::make_unique<GpuBuffer>(device_, scratch_bytes, "the incremental builder's scratch"));
+  const IncrementalParams p{device_->part_shift(), n, static_cast<float>(length)};
+  Bindings b;
+  b.add(entries).add(&on_device.samples).add(&on_device.sub_begin).add(&on_device.subs);
+  for (const auto& s : scratch) b.add(s.get());
+  const auto diagonals = static_cast<std::uint32_t>(n - 1);
+  pieces_.run(groups_of_64(n - 1), diagonals, b.list(), &p);
+  chains_.run(groups_of_64(n - 1), diagonals, b.list(), &p);
+  joins_.run(groups_of_64(n), static_cast<std::uint32_t>(n), b.list(), &p);
   entries.download(std::as_writable_bytes(std::span<float>(table.entry(0, 0), floats)));
   return table;
 }

@@ -5,6 +5,10 @@
 //   VulkanSlicedBuilder: Roettger & Ertl 2002's slice-by-slice first-order
 //     table (shaders/sliced_table.comp), SlicedBuilder's with float32
 //     accumulation; a table of M lengths is M of its dispatches.
+//   VulkanIncrementalBuilder: Lum, Wilson & Ma 2004's incremental subrange
+//     integration (shaders/incremental_table.comp), IncrementalBuilder's in
+//     float: the pieces, the prefix chains within each bin, the joins, all
+//     diagonals at once.
 //   VulkanSecondOrderBuilder: El Hajjar et al. 2008's second-order table
 //     (shaders/second_order_table.comp), FastSecondOrderBuilder's: the
 //     chords' first-order table built on the host (IncrementalBuilder,
@@ -28,6 +32,18 @@ class VulkanSlicedBuilder final : public TableBuilder {
   std::shared_ptr<const VulkanDevice> device_;
   int steps_;
   ComputeKernel kernel_;
+};
+
+class VulkanIncrementalBuilder final : public TableBuilder {
+ public:
+  explicit VulkanIncrementalBuilder(std::shared_ptr<const VulkanDevice> device);
+  std::string_view name() const override { return "incremental"; }
+  // vri::Error when its scratch ((N-1)^2 entries, six times) exceeds a storage buffer.
+  PreintegrationTable build(const DiscreteTf& tf, double length) const override;
+
+ private:
+  std::shared_ptr<const VulkanDevice> device_;
+  ComputeKernel pieces_, chains_, joins_;
 };
 
 class VulkanSecondOrderBuilder final : public SecondOrderBuilder {

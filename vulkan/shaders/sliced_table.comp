@@ -26,23 +26,6 @@ SPLIT_OUTPUT(vec4, entries, 0, 4u)
 #include "discrete_tf.glsl"
 #include "exp_neg.glsl"
 
-// 1 - exp(-x) for x >= 0 to float accuracy (the CPU's -expm1(-x) in double):
-// below 1/2 its Taylor series to x^9 (the rest under 3e-9 of it), where
-// 1 - exp_neg(x) would lose up to 6e-8 / x to cancellation; above, 1 - e^-x >= 0.39.
-float one_minus_exp_neg(float x) {
-  if (!(x < 0.5)) return 1.0 - exp_neg(x);
-  precise float s = 1.0 / 362880.0;
-  s = 1.0 / 40320.0 - x * s;
-  s = 1.0 / 5040.0 - x * s;
-  s = 1.0 / 720.0 - x * s;
-  s = 1.0 / 120.0 - x * s;
-  s = 1.0 / 24.0 - x * s;
-  s = 1.0 / 6.0 - x * s;
-  s = 0.5 - x * s;
-  s = 1.0 - x * s;
-  return x * s;
-}
-
 // floor(a / b) for b > 0.
 int floor_div(int a, int b) {
   const int q = a / b;

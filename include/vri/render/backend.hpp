@@ -44,8 +44,9 @@ std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene)
 
 // Pre-integration tables built on the Vulkan device (issue 22, item 3;
 // docs/GPU.md, "Tables"): order 1 by `sliced` (Roettger & Ertl 2002,
-// SlicedBuilder's with float32 accumulation; steps 0: 2N), order 2 by `fast`
-// (El Hajjar et al. 2008, FastSecondOrderBuilder's). vri::Error with one
+// SlicedBuilder's with float32 accumulation; steps 0: 2N) or `incremental`
+// (Lum, Wilson & Ma 2004), order 2 by `fast` (El Hajjar et al. 2008,
+// FastSecondOrderBuilder's). vri::Error with one
 // line for another builder, or as make_vulkan_scene_renderer.
 std::unique_ptr<TableBuilder> make_vulkan_table_builder(const std::string& builder, int steps);
 std::unique_ptr<SecondOrderBuilder> make_vulkan_second_order_builder(const std::string& builder);
