@@ -69,10 +69,20 @@ std::vector<std::uint32_t> empty_bits(const GridVolume& volume, const EmptySpace
 
 GpuEmptySpace::GpuEmptySpace(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume,
                              const EmptySpace* space)
-    : bits(std::move(device), as_bytes_of(empty_bits(volume, space)), "the empty macro cells"), on(space ? 1 : 0) {
+    : bits(std::move(device), as_bytes_of(empty_bits(volume, space)), "the empty macro cells") {
   if (!space) return;
+  params.on = 1;
   const MacroCells cells(volume);
-  for (int a = 0; a < 3; ++a) dims[a] = cells.dims()[a];
+  for (int a = 0; a < 3; ++a) params.dims[a] = cells.dims()[a];
+}
+
+Bindings table_march_inputs(const GpuVolume& volume, const std::array<std::optional<GpuArray>, 3>& tables,
+                            const std::optional<GpuShading>& shading, const GpuEmptySpace& empty) {
+  const auto or_volume = [&](const std::optional<GpuArray>& a) -> const GpuArray& { return a ? *a : volume.samples; };
+  Bindings b;
+  b.add(volume.samples).add(or_volume(tables[0])).add(or_volume(tables[1])).add(or_volume(tables[2]));
+  b.add(shading ? shading->gradients : volume.samples).add(nullptr /* the rays */);
+  return std::move(b.add(&empty.bits));
 }
 
 GpuTransferFunction::GpuTransferFunction(std::shared_ptr<const VulkanDevice> device, const FloatTransferFunction& tf)

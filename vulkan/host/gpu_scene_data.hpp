@@ -3,6 +3,7 @@
 // samples packed in 32-bit words in their stored type (grid_sampler.glsl)
 // and the transfer function as FloatTransferFunction holds it
 // (transfer_function.glsl).
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -40,15 +41,20 @@ struct ShadingParams {
 };
 ShadingParams shading_params(const std::optional<GpuShading>& shading, int mode);
 
+
 // Empty-space skipping on the device (shaders/empty_space.glsl): the macro
 // cells (macro_cells.hpp, 8 grid cells a side) the CPU classified against the
 // method's transfer function or table (EmptySpace), one bit each. `space`
 // null (skipping off): one word, nothing empty.
+// Its push constants (empty_space.glsl: `int skip, macro_x, macro_y, macro_z;`).
+struct SkipParams {
+  std::int32_t on = 0;               // 1: skip
+  std::int32_t dims[3] = {1, 1, 1};  // macro cells per axis
+};
 struct GpuEmptySpace {
   GpuEmptySpace(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume, const EmptySpace* space);
   GpuBuffer bits;
-  std::int32_t dims[3] = {1, 1, 1};  // macro cells per axis
-  std::int32_t on = 0;               // 1: skip
+  SkipParams params;
 };
 
 struct GpuTransferFunction {
@@ -58,5 +64,19 @@ struct GpuTransferFunction {
   int segments;
   float lo, scale;
 };
+
+// The pre-integrated marches' push constants after GridParams (preint.comp,
+// preint2_dual.comp: the table axis, then the lighting).
+struct TableParams {
+  std::int32_t table_n;
+  float table_lo, table_scale;
+  ShadingParams shading;  // lit 1: sampled, 2: interpolated
+};
+
+// Their inputs in binding order: the volume, three tables (the table, or
+// the weighted ones), the gradients, the rays (null), the empty macro
+// cells; where a mode does not read an array, the volume stands in for it.
+Bindings table_march_inputs(const GpuVolume& volume, const std::array<std::optional<GpuArray>, 3>& tables,
+                            const std::optional<GpuShading>& shading, const GpuEmptySpace& empty);
 
 }  // namespace vri::vulkan

@@ -26,10 +26,8 @@ const std::uint32_t kPreint2Spirv[] = {
 // preint.comp's push constants.
 struct Params {
   GridParams grid;
-  std::int32_t table_n;
-  float table_lo, table_scale;
-  ShadingParams shading;  // lit 1: sampled, 2: interpolated
-  std::int32_t skip, macro_dims[3];
+  TableParams table;
+  SkipParams skip;
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
@@ -99,14 +97,7 @@ VulkanPreint::VulkanPreint(std::shared_ptr<const VulkanDevice> device, const Sce
                   sizeof(Params), inputs().split_arrays());
 }
 
-// Where a mode does not read an array, the volume stands in for it.
-Bindings VulkanPreint::inputs() const {
-  const auto or_volume = [&](const std::optional<GpuArray>& a) -> const GpuArray& { return a ? *a : volume_.samples; };
-  Bindings b;
-  b.add(volume_.samples).add(or_volume(on_device_[0])).add(or_volume(on_device_[1])).add(or_volume(on_device_[2]));
-  b.add(shading_ ? shading_->gradients : volume_.samples).add(nullptr /* the rays */);
-  return std::move(b.add(&empty_->bits));
-}
+Bindings VulkanPreint::inputs() const { return table_march_inputs(volume_, on_device_, shading_, *empty_); }
 
 VulkanPreint::~VulkanPreint() = default;
 
@@ -115,8 +106,8 @@ Image VulkanPreint::render(const Camera& camera, const RenderOptions& options) c
   const GridVolume& volume = scene_.grid();
   const std::vector<float> rays = slab_rays(steps_, camera, volume, tf_, lighting_, h_, options.threads);
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
-           axis_->size(), axis_->lo(), axis_->scale(), shading_params(shading_, lighting_.interpolated() ? 2 : 1),
-           empty_->on, {empty_->dims[0], empty_->dims[1], empty_->dims[2]}};
+           {axis_->size(), axis_->lo(), axis_->scale(), shading_params(shading_, lighting_.interpolated() ? 2 : 1)},
+           empty_->params};
   return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, slab_ray_floats(steps_),
                     p.grid, &p);
 }

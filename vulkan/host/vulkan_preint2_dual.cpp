@@ -23,12 +23,10 @@ const std::uint32_t kSpirv[] = {
 // preint2_dual.comp's push constants.
 struct Params {
   GridParams grid;
-  std::int32_t table_n;
-  float table_lo, table_scale;
-  ShadingParams shading;  // lit 1: sampled, 2: interpolated
+  TableParams table;
   float max_length;
   std::int32_t lengths;
-  std::int32_t skip, macro_dims[3];
+  SkipParams skip;
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
@@ -83,14 +81,7 @@ VulkanPreint2Dual::VulkanPreint2Dual(std::shared_ptr<const VulkanDevice> device,
   kernel_.emplace(device_, kSpirv, kBindings, sizeof(Params), inputs().split_arrays());
 }
 
-// Where a mode does not read an array, the volume stands in for it.
-Bindings VulkanPreint2Dual::inputs() const {
-  const auto or_volume = [&](const std::optional<GpuArray>& a) -> const GpuArray& { return a ? *a : volume_.samples; };
-  Bindings b;
-  b.add(volume_.samples).add(or_volume(tables_[0])).add(or_volume(tables_[1])).add(or_volume(tables_[2]));
-  b.add(shading_ ? shading_->gradients : volume_.samples).add(nullptr /* the rays */);
-  return std::move(b.add(&empty_->bits));
-}
+Bindings VulkanPreint2Dual::inputs() const { return table_march_inputs(volume_, tables_, shading_, *empty_); }
 
 Image VulkanPreint2Dual::render(const Camera& camera, const RenderOptions& options) const {
   throw_if_cancelled(options);
@@ -98,14 +89,10 @@ Image VulkanPreint2Dual::render(const Camera& camera, const RenderOptions& optio
   const std::vector<float> rays = entry_rays(camera, volume, options.threads);
   const FloatAxis axis(axis_);
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
-           axis.size(),
-           axis.lo(),
-           axis.scale(),
-           shading_params(shading_, mode_),
+           {axis.size(), axis.lo(), axis.scale(), shading_params(shading_, mode_)},
            static_cast<float>(max_length_),
            lengths_,
-           empty_->on,
-           {empty_->dims[0], empty_->dims[1], empty_->dims[2]}};
+           empty_->params};
   return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kEntryRayFloats,
                     p.grid, &p);
 }

@@ -25,7 +25,7 @@ struct Params {
   float tf_lo, tf_scale;
   std::int32_t tf_bins, segments;
   ShadingParams shading;  // lit 1: each sample lit
-  std::int32_t skip, macro_dims[3];
+  SkipParams skip;
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
@@ -58,8 +58,7 @@ Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) 
   const GridVolume& volume = scene_.grid();
   const std::vector<float> rays = riemann_rays(camera, volume, h_, scene_.method.jitter, options.threads);
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination), static_cast<float>(h_), tf_.lo,
-           tf_.scale, FloatTransferFunction::kBins, tf_.segments, shading_params(shading_, 1), empty_->on,
-           {empty_->dims[0], empty_->dims[1], empty_->dims[2]}};
+           tf_.scale, FloatTransferFunction::kBins, tf_.segments, shading_params(shading_, 1), empty_->params};
   return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kRiemannRayFloats,
                     p.grid, &p);
 }
