@@ -82,7 +82,8 @@ Bindings table_march_inputs(const GpuVolume& volume, const std::array<std::optio
   Bindings b;
   b.add(volume.samples).add(or_volume(tables[0])).add(or_volume(tables[1])).add(or_volume(tables[2]));
   b.add(shading ? shading->gradients : volume.samples).add(nullptr /* the rays */);
-  return std::move(b.add(&empty.bits));
+  b.add(&empty.bits);
+  return b;
 }
 
 GpuTransferFunction::GpuTransferFunction(std::shared_ptr<const VulkanDevice> device, const FloatTransferFunction& tf)

@@ -45,15 +45,16 @@ VulkanAdaptive::VulkanAdaptive(std::shared_ptr<const VulkanDevice> device, const
     shader_.emplace(scene.lighting, scene.grid());
     shading_.emplace(device_, scene.lighting, *shader_, scene.grid());
   }
-  kernel_.emplace(device_, kSpirv, static_cast<int>(inputs().list().size()) + 1, sizeof(Params),
-                  inputs().split_arrays());
+  const Bindings b = inputs();
+  kernel_.emplace(device_, kSpirv, static_cast<int>(b.list().size()) + 1, sizeof(Params), b.split_arrays());
 }
 
 // Unlit, the volume stands in for the gradients the shader does not read.
 Bindings VulkanAdaptive::inputs() const {
   Bindings b;
   b.add(volume_.samples).add(shading_ ? shading_->gradients : volume_.samples);
-  return std::move(b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */));
+  b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */);
+  return b;
 }
 
 Image VulkanAdaptive::render(const Camera& camera, const RenderOptions& options) const {

@@ -50,7 +50,8 @@ VulkanRiemann::VulkanRiemann(std::shared_ptr<const VulkanDevice> device, const S
 Bindings VulkanRiemann::inputs() const {
   Bindings b;
   b.add(volume_.samples).add(shading_ ? shading_->gradients : volume_.samples);
-  return std::move(b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */).add(&empty_->bits));
+  b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */).add(&empty_->bits);
+  return b;
 }
 
 Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) const {
