@@ -15,7 +15,11 @@ pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1
       libavformat-dev libavcodec-dev libswscale-dev  # vri turntable's .mp4
       # the Vulkan backend (vulkan/): headers and the shader compiler to build;
       # the loader, Mesa's CPU device (lavapipe) and the validation layer to test
-      libvulkan-dev glslc libvulkan1 mesa-vulkan-drivers vulkan-validationlayers)
+      libvulkan-dev glslc libvulkan1 mesa-vulkan-drivers vulkan-validationlayers
+      # sort-last rendering (distributed/): Open MPI, and IceT from paraview-dev
+      # (--no-install-recommends below keeps out python3-paraview, which
+      # conflicts with python3-vtk9)
+      libopenmpi-dev openmpi-bin paraview-dev)
 # The browser test's driver (puppeteer-core) comes from npm: node and npm from
 # Debian unless the image has a node of its own.
 command -v node >/dev/null || pkgs+=(nodejs)

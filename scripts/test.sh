@@ -22,10 +22,11 @@ if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=cc
 bash scripts/build.sh build "${launcher[@]}" -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=ON
 (cd build && ctest --output-on-failure -j "$jobs")
 # Without SIMD only the library's kernels differ: the viewer, which calls
-# them, is tested in the other two builds. (The Python module stays: turning
+# them, is tested in the other two builds, and so is distributed/ (it adds no
+# kernels). (The Python module stays: turning
 # it off changes every file's flags, -fPIC, and so loses the ccache hits.)
 bash scripts/build.sh build-nosimd "${launcher[@]}" -DVRI_SIMD=OFF -DVRI_BUILD_TESTS=ON -DVRI_BUILD_BENCH=OFF \
-  -DVRI_VIEWER=OFF -DVRI_VULKAN=OFF
+  -DVRI_VIEWER=OFF -DVRI_VULKAN=OFF -DVRI_MPI=OFF
 (cd build-nosimd && ctest --output-on-failure -j "$jobs")
 # -g1: line tables (stack traces keep file:line) at less compile time than -g;
 # -O1: the same checks, and about 0.5-0.7x the compile time of -O2, which set

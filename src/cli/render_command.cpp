@@ -2,6 +2,7 @@
 //   [--tolerance E] [--table-size N] [--width W --height H] [--threads K]
 //   [--h0 H --hmin H --hmax H --strategy S] [--error-estimate ERR.npy]
 //   [--trace-pixel PX PY --trace STEPS.csv] [--termination T] [--no-skip] [--double]
+//   [--distributed] (under mpirun: render_distributed.hpp)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -19,6 +20,7 @@
 #include "commands.hpp"
 #include "exr_output.hpp"
 #include "progress_bar.hpp"
+#include "render_distributed.hpp"
 #include "scene_options.hpp"
 #include "vri/core/error.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
@@ -37,7 +39,7 @@ namespace {
 struct RenderArgs {
   std::string scene, output;
   SceneFlags flags;
-  bool quiet = false;
+  bool quiet = false, distributed = false;
   int png_bits = 8;
   std::optional<std::string> error_estimate, trace;
   std::vector<int> trace_pixel;
@@ -68,6 +70,16 @@ int run_render(const RenderArgs& args) {
     throw Error("--png-bits and --background none apply to .png output");
   PngFormat png{.transparent = args.flags.background == "none", .bits = args.png_bits};
   const int threads = checked_threads(args.flags.threads);
+  // Each output is staged as soon as it exists; main() commits them together.
+  const auto write_image = [&](const Image& image, const Scene& scene) {
+    if (ext == ".npy") write_npy(out, image);
+    else if (ext == ".exr") write_exr(out, image);
+    else write_png(out, image, scene.background, png);
+  };
+  if (args.distributed || launched_by_mpirun()) {
+    if (args.error_estimate || args.trace) throw Error("--error-estimate and --trace are not distributed");
+    return run_render_distributed({args.scene, args.output, args.flags, threads, write_image});
+  }
 
   const Scene scene = args.flags.load(args.scene);
   if (args.error_estimate && std::filesystem::path(*args.error_estimate).extension() != ".npy")
@@ -92,10 +104,7 @@ int run_render(const RenderArgs& args) {
   progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-  // Each output is staged as soon as it exists; main() commits them together.
-  if (ext == ".npy") write_npy(out, image);
-  else if (ext == ".exr") write_exr(out, image);
-  else write_png(out, image, scene.background, png);
+  write_image(image, scene);
   if (args.error_estimate) write_npy(*args.error_estimate, renderer.render_error_estimate({.threads = threads}));
   if (args.trace) {
     const std::string trace =
@@ -125,6 +134,8 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "Output image (.npy, .png or .exr)")->required();
   args->flags.add_to(cmd);
   cmd->add_option("--png-bits", args->png_bits, "PNG: 8 (default) or 16 bits a channel");
+  cmd->add_flag("--distributed", args->distributed,
+                "Sort-last over the ranks of mpirun (the default when mpirun starts several): rank 0 writes");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line (it shows only on a terminal, after a second)");
   cmd->add_option("--error-estimate", args->error_estimate, "adaptive: write the per-pixel error estimate (.npy)");
   cmd->add_option("--trace-pixel", args->trace_pixel, "adaptive: pixel PX PY whose steps --trace writes")

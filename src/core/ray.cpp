@@ -1,6 +1,7 @@
 #include "vri/core/ray.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace vri {
@@ -21,6 +22,15 @@ std::optional<Interval> clip_to_box(const Ray& ray, Vec3 lo, Vec3 hi) {
   }
   if (!(t1 > t0)) return std::nullopt;  // empty or a single touching point
   return Interval{t0, t1};
+}
+
+PieceRange owned_pieces(const Interval& iv, double len, long long count) {
+  const auto first_at_or_after = [&](double t) {  // the first piece whose front is at or after t
+    return std::clamp(static_cast<long long>(std::ceil((t - iv.t0) / len)), 0LL, count);
+  };
+  const long long begin = iv.own0 > iv.t0 ? first_at_or_after(iv.own0) : 0;
+  const long long end = iv.own1 < iv.t1 ? first_at_or_after(iv.own1) : count;
+  return {begin, std::max(begin, end)};
 }
 
 }  // namespace vri

@@ -66,7 +66,7 @@ GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& vol
 GuaranteedAdaptiveIntegrator::~GuaranteedAdaptiveIntegrator() = default;
 
 Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) const {
-  const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
+  const auto iv = volume_.clip(ray);
   if (!iv) return {0, 0, 0, 0};
   const double colour_density = 0.45 * tolerance_ / iv->length();
   // Lit colours reach max_brightness: what an optical-depth error or the
@@ -128,7 +128,9 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
     }
   };
 
-  for_each_cell_segment(volume_, ray, *iv, [&](const CellSegment& cs) {
+  // A brick walks its own part (GridVolume::Brick); the densities above stay
+  // the whole ray's, so the bricks' errors add up to one machine's budget.
+  for_each_cell_segment(volume_, ray, owned_part(*iv), [&](const CellSegment& cs) {
     const Cubic s = trilinear_along(volume_, cs);
     // Lit: |N.d| has a kink where N.d changes sign; pieces are cut there too.
     double kinks[3];

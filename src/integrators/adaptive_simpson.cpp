@@ -52,7 +52,7 @@ class SampleCache {
 }  // namespace
 
 Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const {
-  const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
+  const auto iv = volume_.clip(ray);
   if (!iv) return {0, 0, 0, 0};
   SampleCache cache;
   auto eval = [&](double t) {
@@ -75,7 +75,7 @@ Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const
   // eps halves and doubles with the step: it is tolerance_ at h0.
   auto accepted = [&](double err, double h) { return err <= tolerance_ * h / h0_ || h <= hmin_; };
 
-  const double t_end = iv->t1;
+  const double t_end = std::min(iv->t1, iv->own1);  // a brick integrates its own part (GridVolume::Brick)
   double T = 1;  // transmittance at the start of the next outer step
   double C[3] = {0, 0, 0};
   simpson5::StepControl inner{h0_}, outer{h0_};
@@ -101,7 +101,7 @@ Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const
     }
   };
 
-  for (double t = iv->t0; t < t_end;) {
+  for (double t = std::max(iv->t0, iv->own0); t < t_end;) {
     // I_I of Algorithm 3: the first step from t on which the optical depth is accurate.
     double h;
     for (;;) {

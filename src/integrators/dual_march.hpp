@@ -93,13 +93,14 @@ class DualFloatLookup {
 template <class Value>
 Rgba march_cells_float(const GridVolume& volume, const Value* values, const DualFloatLookup& table,
                        const FloatShading* shading, bool interpolated, const Ray& ray, const Leap& leap) {
-  const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
-  if (!iv) return {0, 0, 0, 0};
+  const auto whole = volume.clip(ray);
+  if (!whole) return {0, 0, 0, 0};
+  const Interval iv = owned_part(*whole);  // all of it unless a brick (GridVolume::Brick)
   const std::size_t sy = volume.dims()[0], sz = sy * volume.dims()[1];
   const FloatShading::Vector d = direction(ray);
-  SegmentSkip skip(leap, ray, iv->t1);
+  SegmentSkip skip(leap, ray, iv.t1);
   float T = 1, C[3] = {0, 0, 0};
-  for_each_cell_segment(volume, ray, *iv, [&](const CellSegment& seg) {
+  for_each_cell_segment(volume, ray, iv, [&](const CellSegment& seg) {
     if (T < leap.termination) return false;
     if (skip.skipped(seg)) return true;
     const std::size_t offset = seg.cell[0] + sy * seg.cell[1] + sz * seg.cell[2];

@@ -153,9 +153,13 @@ template <class Lookup, class Value>
 Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Value* values, const Lookup& table,
                  const DiscreteTf& tf, const FloatLighting& lighting, const Ray& ray, double h, const Leap& leap) {
   constexpr int steps = Lookup::kSteps;
-  const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
+  const auto iv = volume.clip(ray);
   if (!iv) return {0, 0, 0, 0};
-  const long long full = static_cast<long long>(std::floor(iv->length() / (steps * h)));
+  const long long all = static_cast<long long>(std::floor(iv->length() / (steps * h)));
+  // The owned slabs (a brick's, else all): full ones begin .. full - 1, and
+  // the partial slab (piece `all`) where end passes all.
+  const PieceRange owned = owned_pieces(*iv, steps * h, all + 1);
+  const long long full = std::min(owned.end, all);
   const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
   struct Point {
     FloatSample sample;
@@ -184,11 +188,11 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Va
   // samples are taken and its spot found (its entries start loading) before
   // slab k is composited.
   Slab p{};
-  p[0] = sample(0);
-  if (full > 0) fill(p, 0);
+  p[0] = sample(owned.begin * steps);
+  if (owned.begin < full) fill(p, owned.begin);
   auto spot = find(p);
   double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
-  for (long long k = 0; k < full;) {
+  for (long long k = owned.begin; k < full;) {
     if (const long long j = leap_target(leap, ray, *iv, h, steps, k, full, t_check); j > k) {
       k = j;
       p[0] = sample(k * steps);
@@ -215,6 +219,7 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Va
       spot = following;
     }
   }
+  if (!(owned.begin <= all && all < owned.end)) return result();  // the partial slab is another brick's
   return finish_float<steps>(sampler, values, tf, lighting, ray, *iv, full, h, p[0].sample, termination, C, T);
 }
 

@@ -21,7 +21,7 @@ namespace vri::detail {
 bool packets_available() { return __builtin_cpu_supports("avx2"); }
 
 bool packets_fit(const GridVolume& volume) {
-  return packets_available() && volume.size() <= static_cast<std::size_t>(INT_MAX);
+  return packets_available() && volume.size() <= static_cast<std::size_t>(INT_MAX) && !volume.brick();
 }
 
 namespace {

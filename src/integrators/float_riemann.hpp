@@ -89,16 +89,17 @@ template <class Value>
 Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, const Value* values,
                          const FloatTransferFunction& tf, const FloatShading* shading, const Ray& ray, double h,
                          const Leap& leap, std::optional<std::uint64_t> jitter = {}) {
-  const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
+  const auto iv = volume.clip(ray);
   if (!iv) return {0, 0, 0, 0};
   const double u = jitter ? jitter_fraction(ray, *jitter) : 0.0;  // the sample's place in its step
-  const long long n = riemann_samples(*iv, h);
+  const PieceRange owned = owned_pieces(*iv, h, riemann_samples(*iv, h));
+  const long long n = owned.end;
   const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
   const float termination = static_cast<float>(leap.termination);
   const FloatShading::Vector d = direction(ray);
   Float4 C = {0, 0, 0, 0};
   float T = 1;
-  for (long long k = 0; k < n;) {
+  for (long long k = owned.begin; k < n;) {
     const long long stop = riemann_head(leap, ray, *iv, h, n, k, u);
     for (; k < stop; ++k) {
       const double h_k = std::min(h, iv->t1 - (iv->t0 + k * h));

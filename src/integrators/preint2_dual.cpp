@@ -28,14 +28,15 @@ std::optional<HeadlightShader> dual_shader(const Lighting& lighting, const GridV
 // the same bytes. Stops once T < leap.termination.
 template <class At, class Slab>
 Rgba march_cells(const GridVolume& volume, const Ray& ray, const detail::Leap& leap, At&& at, Slab&& slab) {
-  const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
-  if (!iv) return {0, 0, 0, 0};
+  const auto whole = volume.clip(ray);
+  if (!whole) return {0, 0, 0, 0};
+  const Interval iv = owned_part(*whole);  // all of it unless a brick (GridVolume::Brick)
   const auto sample_at = [&](Vec3 p) { return detail::SlabSample<decltype(at(p))>{volume.sample(p), at(p)}; };
   detail::FrontToBack acc;
-  detail::SegmentSkip skip(leap, ray, iv->t1);
-  auto front = sample_at(ray.at(iv->t0));
+  detail::SegmentSkip skip(leap, ray, iv.t1);
+  auto front = sample_at(ray.at(iv.t0));
   bool front_valid = true;  // false after a skipped segment: take it again at the next one's ta
-  for_each_cell_segment(volume, ray, *iv, [&](const CellSegment& seg) {
+  for_each_cell_segment(volume, ray, iv, [&](const CellSegment& seg) {
     if (acc.T < leap.termination) return false;
     if (skip.skipped(seg)) {
       front_valid = false;

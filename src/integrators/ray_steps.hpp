@@ -99,10 +99,14 @@ Rgba march_typed(const GridVolume& volume, const Ray& ray, double h, const Polic
                  const Leap& leap, const Value* values) {
   static_assert(Samples >= 2);
   constexpr int steps = Samples - 1;
-  const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
+  const auto iv = volume.clip(ray);
   if (!iv) return {0, 0, 0, 0};
   const double slab = steps * h;
-  const long long full = static_cast<long long>(std::floor(iv->length() / slab));
+  const long long all = static_cast<long long>(std::floor(iv->length() / slab));
+  // The owned slabs (a brick's, else all): full ones begin .. full - 1, and
+  // the partial slab (piece `all`) where end passes all.
+  const PieceRange owned = owned_pieces(*iv, slab, all + 1);
+  const long long full = std::min(owned.end, all);
   using Sample = SlabSample<decltype(policy.at(Vec3{}))>;
   using Slab = std::array<Sample, Samples>;
   const auto sample_at = [&](double t) {
@@ -114,10 +118,10 @@ Rgba march_typed(const GridVolume& volume, const Ray& ray, double h, const Polic
   };
   FrontToBack acc;
   Slab s{}, next{};
-  s[0] = sample_at(iv->t0);
-  if (full > 0) fill(s, 0);
+  s[0] = sample_at(iv->t0 + owned.begin * steps * h);
+  if (owned.begin < full) fill(s, owned.begin);
   double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
-  for (long long k = 0; k < full; ++k) {
+  for (long long k = owned.begin; k < full; ++k) {
     if (acc.T < leap.termination) return acc.result();
     if (const long long j = leap_target(leap, ray, *iv, h, steps, k, full, t_check); j > k) {
       k = j;
@@ -134,7 +138,7 @@ Rgba march_typed(const GridVolume& volume, const Ray& ray, double h, const Polic
     acc.add(v[0], v[1], v[2], v[3]);
     s = next;
   }
-  if (acc.T < leap.termination) return acc.result();
+  if (acc.T < leap.termination || !(owned.begin <= all && all < owned.end)) return acc.result();
   const double t_rest = iv->t0 + full * steps * h;
   const double sub = (iv->t1 - t_rest) / steps;
   if (sub > 0)

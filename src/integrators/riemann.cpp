@@ -42,14 +42,14 @@ Rgba RiemannIntegrator::integrate(const Ray& ray) const {
 
 template <class Value>
 Rgba RiemannIntegrator::march(const Ray& ray, const Value* values) const {
-  const auto iv = clip_to_box(ray, volume_.box_lo(), volume_.box_hi());
+  const auto iv = volume_.clip(ray);
   if (!iv) return {0, 0, 0, 0};
   const double u = jitter_ ? detail::jitter_fraction(ray, *jitter_) : 0.0;  // the sample's place in its step
-  const long long n = detail::riemann_samples(*iv, h_);
+  const PieceRange owned = owned_pieces(*iv, h_, detail::riemann_samples(*iv, h_));
   double T = 1, C[3] = {0, 0, 0};
   const EmptySpace* space = fast_.space();
   double t_check = -std::numeric_limits<double>::infinity();  // in a non-empty macro cell until then
-  for (long long k = 0; k < n && !(T < fast_.termination()); ++k) {
+  for (long long k = owned.begin; k < owned.end && !(T < fast_.termination()); ++k) {
     const double t_k = iv->t0 + k * h_;  // the step [t_k, t_k + hk]
     const double hk = std::min(h_, iv->t1 - t_k);
     if (!(hk > 0)) break;

@@ -146,6 +146,34 @@ Vec3 GridVolume::box_hi() const {
           origin_.z + (dims_[2] - 1) * spacing_.z};
 }
 
+void GridVolume::set_brick(const Brick& brick) {
+  brick_ = brick;
+  min_ = brick.whole_min;
+  max_ = brick.whole_max;
+}
+
+std::optional<Interval> GridVolume::clip(const Ray& ray) const {
+  if (!brick_) return clip_to_box(ray, box_lo(), box_hi());
+  const Brick& b = *brick_;
+  auto iv = clip_to_box(ray, b.whole_lo, b.whole_hi);
+  if (!iv) return iv;
+  // The owned window from the split planes alone: (plane - o) / d, the same
+  // double on both sides of a plane.
+  for (int a = 0; a < 3; ++a) {
+    const bool split_lo = b.own_lo[a] > b.whole_lo[a], split_hi = b.own_hi[a] < b.whole_hi[a];
+    const double o = ray.origin[a], d = ray.dir[a];
+    if (d == 0) {  // parallel to the planes: owned if o lies in [own_lo, own_hi)
+      if ((split_lo && o < b.own_lo[a]) || (split_hi && !(o < b.own_hi[a]))) return std::nullopt;
+      continue;
+    }
+    const double enter = d > 0 ? b.own_lo[a] : b.own_hi[a], leave = d > 0 ? b.own_hi[a] : b.own_lo[a];
+    if (d > 0 ? split_lo : split_hi) iv->own0 = std::max(iv->own0, (enter - o) / d);
+    if (d > 0 ? split_hi : split_lo) iv->own1 = std::min(iv->own1, (leave - o) / d);
+  }
+  if (!(iv->own1 > iv->own0) || iv->own1 <= iv->t0 || iv->own0 >= iv->t1) return std::nullopt;
+  return iv;
+}
+
 double GridVolume::voxel_unit() const {
   return std::min({spacing_.x, spacing_.y, spacing_.z});
 }

@@ -1,5 +1,6 @@
 #pragma once
 // Ray: x(t) = origin + t * dir with |dir| = 1, so t is world distance (SPEC §4).
+#include <limits>
 #include <optional>
 
 #include "vri/core/vec3.hpp"
@@ -14,8 +15,30 @@ struct Ray {
 
 struct Interval {
   double t0, t1;
+  // Sort-last rendering (GridVolume::Brick, distributed/): this process
+  // integrates only the pieces of [t0, t1] (samples, slabs, cells) whose
+  // front lies in [own0, own1); by default all of them.
+  double own0 = -std::numeric_limits<double>::infinity();
+  double own1 = std::numeric_limits<double>::infinity();
   double length() const { return t1 - t0; }
+  bool whole() const { return own0 <= t0 && own1 >= t1; }
 };
+
+// Of `count` pieces of length `len` cut from iv.t0 (piece k's front at
+// t0 + k len; the last may be shorter), the range [begin, end) that iv owns.
+// Neighbouring bricks compute their shared bound from the same plane, so
+// every piece falls in exactly one brick's range.
+struct PieceRange {
+  long long begin, end;
+};
+PieceRange owned_pieces(const Interval& iv, double len, long long count);
+
+// The owned part [max(t0, own0), min(t1, own1)] for methods that walk the
+// grid's cells: a brick's window starts and ends on cell faces, so its cells
+// are pieces of the whole ray's.
+inline Interval owned_part(const Interval& iv) {
+  return {iv.t0 > iv.own0 ? iv.t0 : iv.own0, iv.t1 < iv.own1 ? iv.t1 : iv.own1};
+}
 
 // The part of the ray inside the closed box [lo, hi] with t >= 0, if any.
 // A ray running exactly along a face is inside (SPEC §1).

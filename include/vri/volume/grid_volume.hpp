@@ -13,11 +13,13 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <utility>
 #include <variant>
 #include <vector>
 
+#include "vri/core/ray.hpp"
 #include "vri/core/vec3.hpp"
 #include "vri/volume/scalar_type.hpp"
 
@@ -97,6 +99,24 @@ class GridVolume {
 
   Vec3 box_lo() const { return origin_; }
   Vec3 box_hi() const;
+
+  // Sort-last rendering (distributed/): this volume may hold one brick of a
+  // larger grid, the points it owns and a ghost layer around them. Rays are
+  // then clipped to the whole grid's box, so that every sample stands where
+  // it stands on one machine, and a method integrates only the pieces of a
+  // ray whose front lies in the owned box (Interval::own0, own1): half open
+  // [own_lo, own_hi) across the split planes, so each piece has one owner.
+  // min_value() and max_value() are the whole grid's.
+  struct Brick {
+    Vec3 whole_lo, whole_hi;  // the whole grid's box
+    Vec3 own_lo, own_hi;      // the owned box; faces on the whole box are not split planes
+    float whole_min, whole_max;
+  };
+  void set_brick(const Brick& brick);
+  const std::optional<Brick>& brick() const { return brick_; }
+  // The ray clipped to the box (the whole grid's for a brick) with the part
+  // this volume owns; nullopt where it misses the box or owns none of it.
+  std::optional<Interval> clip(const Ray& ray) const;
   // min(sx, sy, sz): the unit of step sizes (SPEC §1).
   double voxel_unit() const;
 
@@ -117,6 +137,7 @@ class GridVolume {
   std::shared_ptr<const void> owner_;
   Vec3 spacing_, origin_;
   float min_ = 0, max_ = 0;
+  std::optional<Brick> brick_;
   struct Cache;  // what is derived from the samples once (grid_volume.cpp)
   std::shared_ptr<Cache> cache_;
 };

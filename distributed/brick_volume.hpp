@@ -1,0 +1,22 @@
+#pragma once
+// One rank's part of the volume in sort-last rendering: the points of its
+// brick's cells and a ghost layer around them, as a GridVolume that knows it
+// is a brick (GridVolume::Brick), so every method integrates exactly the
+// pieces of each ray that start in the brick, on the whole ray's samples.
+#include "kd_bricks.hpp"
+#include "vri/integrators/method_spec.hpp"
+#include "vri/volume/grid_volume.hpp"
+
+namespace vri::distributed {
+
+// Ghost points a method needs on each side of its brick: a piece it owns
+// starts in the brick and reads samples up to one piece (two steps for
+// preint2's slabs) further, trilinear reads the next point and lighting's
+// central differences one more; one more for rounding.
+int ghost_points(const MethodSpec& method);
+
+// The brick of `whole` owning `cells`, with `ghost` points around them
+// (clamped to the grid).
+GridVolume cut_brick(const GridVolume& whole, const BrickCells& cells, int ghost);
+
+}  // namespace vri::distributed

@@ -1,0 +1,35 @@
+#pragma once
+// Sort-last rendering of a grid scene over the ranks of an mpirun (SPEC §11
+// `vri render --distributed`; docs/DISTRIBUTED.md): rank r renders brick r
+// of a k-d split (kd_bricks.hpp) - the pieces of every ray that start in it,
+// on the whole ray's samples (GridVolume::Brick) - and IceT composites the
+// partial images front to back (icet_compositor.hpp). The image equals one
+// process's up to float rounding in the compositing.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "mpi_world.hpp"
+#include "vri/render/image.hpp"
+#include "vri/render/renderer.hpp"
+#include "vri/scene/scene.hpp"
+
+namespace vri::distributed {
+
+struct DistributedImage {
+  Image image;                   // rank 0: the whole image; elsewhere empty
+  double render_seconds = 0;     // this rank's own part
+  double composite_seconds = 0;  // IceT, this rank's share
+  std::size_t brick_bytes = 0;   // this rank's samples
+};
+
+// What must agree across ranks: the build, the scene text and the flags.
+std::uint64_t fingerprint(std::uint64_t seed, std::string_view bytes);
+
+// Collective. Each rank passes the scene it loaded and its fingerprint; a
+// rank whose fingerprint differs from rank 0's, or that fails anywhere
+// (bricking, tables, rendering), makes every rank throw vri::Error naming it.
+DistributedImage render_distributed(const MpiWorld& world, const Scene& scene, std::uint64_t fingerprint,
+                                    const RenderOptions& options);
+
+}  // namespace vri::distributed

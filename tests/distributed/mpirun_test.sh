@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# mpirun_test.sh VRI SOURCE_DIR: `mpirun -np N vri render` against one process
+# (SPEC §11: within 1e-6), and its failures (docs/DISTRIBUTED.md).
+# Every bundled grid scene on 4 ranks; exact, riemann, preint1 and preint2 on
+# 2, 3 and 8; adaptive against exact within its tolerance; then a rank that
+# cannot read its scene, mismatched scenes, a rank that dies and a mesh scene:
+# each a non-zero exit, a line naming the rank, and no output file.
+set -u
+vri=$1 src=$(cd "$2" && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+mpirun=(mpirun --allow-run-as-root --oversubscribe)
+size=(--width 48 --height 40 -q --threads 1)
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+same() {  # same SCENE NP [flags...]: the distributed image within 1e-6 of one process's
+  local scene=$1 np=$2
+  shift 2
+  "$vri" render "$scene" -o "$tmp/one.npy" "${size[@]}" "$@" 2>"$tmp/err" || { fail "$scene $*: one process: $(cat "$tmp/err")"; return; }
+  "${mpirun[@]}" -np "$np" "$vri" render "$scene" -o "$tmp/many.npy" "${size[@]}" "$@" 2>"$tmp/err" ||
+    { fail "$scene $* on $np ranks: $(tail -1 "$tmp/err")"; return; }
+  if "$vri" compare "$tmp/one.npy" "$tmp/many.npy" --tolerance 1e-6 >"$tmp/cmp"; then
+    echo "ok: $(basename "$scene") $* on $np ranks: max $(awk 'NR > 1 {print $4}' "$tmp/cmp" | sort -g | tail -1)"
+  else
+    fail "$(basename "$scene") $* on $np ranks differs by more than 1e-6:"; cat "$tmp/cmp"
+  fi
+}
+
+for scene in "$src"/scenes/*.json; do
+  case $(basename "$scene") in blunt_fin*) continue ;; esac  # tetrahedral meshes
+  if grep -q '"adaptive"' "$scene"; then continue; fi        # below, against exact
+  same "$scene" 4
+done
+for np in 2 3 8; do
+  for method in exact riemann preint1 preint2; do same "$src/scenes/neghip_lit.json" "$np" --method "$method"; done
+done
+same "$src/scenes/tooth.json" 3 --method preint2-dual
+
+# adaptive (guaranteed) on 4 ranks against exact on one, within its tolerance.
+scene=$src/scenes/marschner_lobb_lit.json
+"$vri" render "$scene" -o "$tmp/exact.npy" "${size[@]}" --method exact --tolerance 1e-7 2>/dev/null
+"${mpirun[@]}" -np 4 "$vri" render "$scene" -o "$tmp/adaptive.npy" "${size[@]}" --strategy guaranteed --tolerance 1e-3 \
+  2>/dev/null || fail "adaptive on 4 ranks"
+"$vri" compare "$tmp/exact.npy" "$tmp/adaptive.npy" --tolerance 1e-3 >"$tmp/cmp" && echo "ok: adaptive within 1e-3 of exact" ||
+  { fail "adaptive on 4 ranks is over its tolerance:"; cat "$tmp/cmp"; }
+
+refused() {  # refused WHAT PATTERN mpirun-args...: non-zero, PATTERN on stderr, no file
+  local what=$1 pattern=$2
+  shift 2
+  rm -f "$tmp/out.npy"
+  if timeout 120 "${mpirun[@]}" "$@" >"$tmp/log" 2>&1; then fail "$what: exit status 0"; fi
+  grep -q -- "$pattern" "$tmp/log" || { fail "$what: no '$pattern' in:"; cat "$tmp/log"; }
+  [ ! -e "$tmp/out.npy" ] || fail "$what: wrote an output file"
+  echo "ok: $what refused"
+}
+good=$src/scenes/neghip.json
+# The same scene with the eye moved, beside links to the data it names.
+mkdir -p "$tmp/scenes"
+for d in data presets; do ln -s "$src/$d" "$tmp/$d"; done
+python3 - "$good" "$tmp/scenes/moved.json" <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+scene["camera"]["eye"][0] += 1
+json.dump(scene, open(sys.argv[2], "w"))
+PY
+out=(-o "$tmp/out.npy" "${size[@]}")
+refused "a rank that cannot read its scene" "rank 1: " \
+  -np 1 "$vri" render "$good" "${out[@]}" : -np 1 "$vri" render "$tmp/missing.json" "${out[@]}" --distributed
+refused "mismatched scenes" "rank 1: its build, scene or flags differ" \
+  -np 1 "$vri" render "$good" "${out[@]}" --distributed : -np 1 "$vri" render "$tmp/scenes/moved.json" "${out[@]}" --distributed
+refused "a rank that dies" "signal 9" \
+  -np 1 "$vri" render "$good" "${out[@]}" --distributed : -np 1 bash -c 'kill -9 $$'
+refused "a mesh scene" "rank 0: distributed rendering takes grid scenes" \
+  -np 2 "$vri" render "$src/scenes/blunt_fin.json" "${out[@]}"
+
+[ "$failures" -eq 0 ] && echo "all passed" || { echo "$failures failed"; exit 1; }
