@@ -5,6 +5,7 @@
 // pieces of each ray that start in the brick, on the whole ray's samples.
 #include "kd_bricks.hpp"
 #include "vri/integrators/method_spec.hpp"
+#include "vri/volume/grid_part.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri::distributed {
@@ -15,8 +16,14 @@ namespace vri::distributed {
 // central differences one more; one more for rounding.
 int ghost_points(const MethodSpec& method);
 
-// The brick of `whole` owning `cells`, with `ghost` points around them
-// (clamped to the grid).
+// The points a brick's rank reads: its cells' points and `ghost` more on
+// each side, clamped to the grid.
+GridRegion brick_region(const BrickCells& cells, std::array<int, 3> whole_dims, int ghost);
+
+// Makes `part` (a part of a grid read by brick_region) own `cells`.
+void own_cells(GridVolume& part, const BrickCells& cells);
+
+// The brick of `whole` owning `cells`, with `ghost` points around them.
 GridVolume cut_brick(const GridVolume& whole, const BrickCells& cells, int ghost);
 
 }  // namespace vri::distributed

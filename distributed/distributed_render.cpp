@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <exception>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,17 +35,13 @@ void check_method(const Scene& scene) {
                 "set termination 0");
 }
 
-template <class F>
-auto step(const MpiWorld& world, F&& f) {
-  std::optional<std::string> failure;
-  std::optional<decltype(f())> result;
-  try {
-    result.emplace(f());
-  } catch (const std::exception& e) {
-    failure = e.what();
-  }
-  world.agree(failure);
-  return std::move(*result);
+// The process's peak resident set (VmHWM in /proc/self/status), bytes.
+std::size_t peak_rss() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stoull(line.substr(6)) * 1024;  // "VmHWM:  1234 kB"
+  return 0;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -53,14 +50,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-DistributedImage render_distributed(const MpiWorld& world, const Scene& scene, std::uint64_t fingerprint,
-                                    const RenderOptions& options) {
+void check_same_job(const MpiWorld& world, std::uint64_t fingerprint) {
   const std::vector<std::uint64_t> prints = world.all_gather(fingerprint);
   std::optional<std::string> mismatch;
   if (prints[world.rank()] != prints[0])
     mismatch = "its build, scene or flags differ from rank 0's (run the same vri and scene on every rank)";
   world.agree(mismatch);
+}
 
+DistributedImage render_distributed(const MpiWorld& world, const Scene& scene, const RenderOptions& options) {
   // This rank's brick and the renderer on it (which keeps a reference to its scene).
   struct Part {
     KdBricks bricks;
@@ -68,12 +66,16 @@ DistributedImage render_distributed(const MpiWorld& world, const Scene& scene, s
     std::unique_ptr<const SceneRenderer> renderer;
   };
   DistributedImage out;
-  const auto part = step(world, [&] {
+  const auto part = world.agreed([&] {
     check_method(scene);
-    const GridVolume& whole = scene.grid();
-    KdBricks bricks(whole.dims(), world.size());
+    const GridVolume& grid = scene.grid();
+    // A part read by brick_region (PartialLoad) now owns its brick; a whole grid is cut.
+    const std::array<int, 3> dims = grid.brick() ? grid.brick()->whole_dims : grid.dims();
+    KdBricks bricks(dims, world.size());
+    const BrickCells& cells = bricks.brick(world.rank());
     Scene local = scene;
-    local.volume = cut_brick(whole, bricks.brick(world.rank()), ghost_points(scene.method));
+    if (grid.brick()) own_cells(std::get<GridVolume>(local.volume), cells);
+    else local.volume = cut_brick(grid, cells, ghost_points(scene.method));
     auto p = std::make_shared<Part>(Part{std::move(bricks), std::move(local), nullptr});
     p->renderer = std::make_unique<const SceneRenderer>(p->scene);
     return p;
@@ -81,14 +83,15 @@ DistributedImage render_distributed(const MpiWorld& world, const Scene& scene, s
   out.brick_bytes = part->scene.grid().bytes();
 
   const auto start = std::chrono::steady_clock::now();
-  const Image partial = step(world, [&] { return part->renderer->render(options); });
+  const Image partial = world.agreed([&] { return part->renderer->render(options); });
   out.render_seconds = seconds_since(start);
 
   const auto composite_start = std::chrono::steady_clock::now();
-  const GridVolume& whole = scene.grid();
-  const std::vector<int> order = part->bricks.front_to_back(scene.camera, whole.origin(), whole.spacing());
-  out.image = step(world, [&] { return IceTCompositor(world.comm()).composite(partial, order); });
+  const GridVolume& grid = scene.grid();
+  const std::vector<int> order = part->bricks.front_to_back(scene.camera, grid.whole_lo(), grid.spacing());
+  out.image = world.agreed([&] { return IceTCompositor(world.comm()).composite(partial, order); });
   out.composite_seconds = seconds_since(composite_start);
+  out.peak_rss = peak_rss();
   return out;
 }
 

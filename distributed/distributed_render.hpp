@@ -21,15 +21,20 @@ struct DistributedImage {
   double render_seconds = 0;     // this rank's own part
   double composite_seconds = 0;  // IceT, this rank's share
   std::size_t brick_bytes = 0;   // this rank's samples
+  std::size_t peak_rss = 0;      // this rank's peak resident memory, bytes (Linux VmHWM; 0 elsewhere)
 };
 
 // What must agree across ranks: the build, the scene text and the flags.
 std::uint64_t fingerprint(std::uint64_t seed, std::string_view bytes);
 
-// Collective. Each rank passes the scene it loaded and its fingerprint; a
-// rank whose fingerprint differs from rank 0's, or that fails anywhere
-// (bricking, tables, rendering), makes every rank throw vri::Error naming it.
-DistributedImage render_distributed(const MpiWorld& world, const Scene& scene, std::uint64_t fingerprint,
-                                    const RenderOptions& options);
+// Collective, before anything else: throws MpiWorld::JobFailed on every rank
+// if some rank's fingerprint differs from rank 0's.
+void check_same_job(const MpiWorld& world, std::uint64_t fingerprint);
+
+// Collective. Each rank passes the scene it loaded: the whole grid, or its
+// part as brick_region picks it (PartialLoad); a rank that fails anywhere
+// (bricking, tables, rendering, compositing) makes every rank throw
+// MpiWorld::JobFailed naming it.
+DistributedImage render_distributed(const MpiWorld& world, const Scene& scene, const RenderOptions& options);
 
 }  // namespace vri::distributed

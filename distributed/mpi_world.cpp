@@ -36,7 +36,7 @@ void MpiWorld::agree(const std::optional<std::string>& failure) const {
   MPI_Bcast(&length, 1, MPI_INT, first, MPI_COMM_WORLD);
   why.resize(length);
   MPI_Bcast(why.data(), length, MPI_CHAR, first, MPI_COMM_WORLD);
-  throw Error("rank " + std::to_string(first) + ": " + why);
+  throw JobFailed("rank " + std::to_string(first) + ": " + why);
 }
 
 std::vector<std::uint64_t> MpiWorld::all_gather(std::uint64_t value) const {
@@ -44,6 +44,13 @@ std::vector<std::uint64_t> MpiWorld::all_gather(std::uint64_t value) const {
   if (MPI_Allgather(&value, 1, MPI_UINT64_T, all.data(), 1, MPI_UINT64_T, MPI_COMM_WORLD) != MPI_SUCCESS)
     throw Error("rank " + std::to_string(rank_) + ": MPI_Allgather failed");
   return all;
+}
+
+std::pair<float, float> MpiWorld::all_min_max(float lo, float hi) const {
+  float in[2] = {lo, -hi}, out[2];
+  if (MPI_Allreduce(in, out, 2, MPI_FLOAT, MPI_MIN, MPI_COMM_WORLD) != MPI_SUCCESS)
+    throw Error("rank " + std::to_string(rank_) + ": MPI_Allreduce failed");
+  return {out[0], -out[1]};
 }
 
 }  // namespace vri::distributed

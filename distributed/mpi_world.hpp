@@ -3,11 +3,15 @@
 // MPI_THREAD_FUNNELED (only the main thread calls MPI; TBB renders in
 // between) and finalised on destruction.
 #include <cstdint>
+#include <exception>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <mpi.h>
+
+#include "vri/core/error.hpp"
 
 namespace vri::distributed {
 
@@ -26,12 +30,35 @@ class MpiWorld {
   int size() const { return size_; }
   MPI_Comm comm() const { return MPI_COMM_WORLD; }
 
+  // Thrown on every rank by agree() when some rank failed: it was agreed on
+  // already, so no catch block should call agree() for it again.
+  class JobFailed : public Error {
+   public:
+    using Error::Error;
+  };
   // Collective: every rank passes its failure, if any; if some rank failed,
-  // every rank throws vri::Error "rank R: why" for the lowest such rank, so
+  // every rank throws JobFailed "rank R: why" for the lowest such rank, so
   // no rank waits in a collective for one that gave up.
   void agree(const std::optional<std::string>& failure) const;
+  // Collective: f() on every rank, then agree() on whether it threw.
+  template <class F>
+  auto agreed(F&& f) const {
+    std::optional<std::string> failure;
+    std::optional<decltype(f())> result;
+    try {
+      result.emplace(f());
+    } catch (const JobFailed&) {
+      throw;  // agreed on inside f
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+    agree(failure);
+    return std::move(*result);
+  }
   // Collective: every rank's value, by rank.
   std::vector<std::uint64_t> all_gather(std::uint64_t value) const;
+  // Collective: the smallest lo and the largest hi over the ranks.
+  std::pair<float, float> all_min_max(float lo, float hi) const;
 
  private:
   int rank_ = 0, size_ = 1;

@@ -19,7 +19,9 @@ pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1
       # sort-last rendering (distributed/): Open MPI, and IceT from paraview-dev
       # (--no-install-recommends below keeps out python3-paraview, which
       # conflicts with python3-vtk9)
-      libopenmpi-dev openmpi-bin paraview-dev)
+      libopenmpi-dev openmpi-bin paraview-dev
+      time  # GNU time: one process's peak memory beside the ranks' (tests/distributed/)
+)
 # The browser test's driver (puppeteer-core) comes from npm: node and npm from
 # Debian unless the image has a node of its own.
 command -v node >/dev/null || pkgs+=(nodejs)

@@ -5,12 +5,15 @@
 #include "vri/core/error.hpp"
 
 #ifdef VRI_DISTRIBUTED
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <optional>
 #include <sstream>
 
+#include "brick_volume.hpp"
 #include "distributed_render.hpp"
+#include "kd_bricks.hpp"
 #include "mpi_world.hpp"
 #include "vri/render/render_checks.hpp"
 #include "vri/version.hpp"
@@ -51,32 +54,44 @@ bool launched_by_mpirun() { return distributed::MpiWorld::launched_with_several_
 int run_render_distributed(const DistributedJob& job) {
   distributed::MpiWorld world;
   try {
-    std::optional<Scene> scene;
-    std::optional<std::string> failure;
-    try {
-      scene.emplace(job.flags.load(job.scene_file));
-      if (job.flags.parsed_backend() != Backend::Cpu)
-        throw Error("--distributed renders on the CPU backend only");
-    } catch (const std::exception& e) {
-      failure = e.what();
-    }
-    world.agree(failure);
+    distributed::check_same_job(world, job_fingerprint(job.scene_file));
+    // Each rank reads its brick alone: the k-d split of the grid's dims, the
+    // ghost layer of the method the flags leave.
+    const PartialLoad part{
+        .region =
+            [&](std::array<int, 3> dims, const MethodSpec& method) {
+              MethodSpec m = method;
+              if (job.flags.overrides.method) m.name = *job.flags.overrides.method;
+              if (job.flags.overrides.step) m.step = *job.flags.overrides.step;
+              const distributed::KdBricks bricks(dims, world.size());
+              return distributed::brick_region(bricks.brick(world.rank()), dims, distributed::ghost_points(m));
+            },
+        .value_range =
+            [&](float lo, float hi) {
+              world.agree(std::nullopt);  // every rank read its part
+              return world.all_min_max(lo, hi);
+            }};
+    const Scene scene = world.agreed([&] {
+      if (job.flags.parsed_backend() != Backend::Cpu) throw Error("--distributed renders on the CPU backend only");
+      return job.flags.load(job.scene_file, &part);
+    });
     const distributed::DistributedImage result =
-        distributed::render_distributed(world, *scene, job_fingerprint(job.scene_file), {.threads = job.threads});
+        distributed::render_distributed(world, scene, {.threads = job.threads});
     const std::vector<std::uint64_t> bytes = world.all_gather(result.brick_bytes);
+    const std::vector<std::uint64_t> rss = world.all_gather(result.peak_rss);
     if (world.rank() != 0) return 0;
-    job.write(result.image, *scene);
-    const Camera camera(scene->camera);
-    if (const auto cause = transparency_cause(result.image, *scene, camera))
+    job.write(result.image, scene);
+    const Camera camera(scene.camera);
+    if (const auto cause = transparency_cause(result.image, scene, camera))
       std::cerr << "vri: warning: every pixel is transparent: " << *cause << "\n";
-    std::size_t largest = 0;
-    for (const std::uint64_t b : bytes) largest = std::max<std::size_t>(largest, b);
-    std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '" << scene->method.name
+    const std::uint64_t largest = *std::max_element(bytes.begin(), bytes.end());
+    const std::uint64_t largest_rss = *std::max_element(rss.begin(), rss.end());
+    std::cerr << "vri: rendered " << camera.width() << "x" << camera.height() << " with '" << scene.method.name
               << "' on " << world.size() << " ranks: rank 0 rendered its brick in " << result.render_seconds
               << " s, composited in " << result.composite_seconds << " s; largest brick " << largest
-              << " bytes -> " << job.output << "\n";
+              << " bytes, largest peak memory of a rank " << largest_rss << " bytes -> " << job.output << "\n";
     return 0;
-  } catch (const Error&) {
+  } catch (const distributed::MpiWorld::JobFailed&) {
     if (world.rank() == 0) throw;  // one line, from rank 0, naming the rank that failed
     return 1;
   }

@@ -51,8 +51,8 @@ void SceneFlags::add_to(CLI::App* cmd) {
   cmd->add_option("--strategy", o.strategy, "adaptive: coupled, decoupled or guaranteed");
 }
 
-Scene SceneFlags::load(const std::string& scene_file) const {
-  Scene scene = load_scene(scene_file);
+Scene SceneFlags::load(const std::string& scene_file, const PartialLoad* part) const {
+  Scene scene = part ? load_scene(scene_file, *part) : load_scene(scene_file);
   SceneOverrides o = overrides;
   if (no_skip) o.skip_empty = false;
   if (double_math) o.float_math = false;

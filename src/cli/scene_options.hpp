@@ -22,7 +22,8 @@ struct SceneFlags {
   // Registers every flag on `cmd`.
   void add_to(CLI::App* cmd);
   // The scene file with the flags applied; the background unless "none".
-  Scene load(const std::string& scene_file) const;
+  // With `part`, one part of its grid (distributed rendering, scene.hpp).
+  Scene load(const std::string& scene_file, const PartialLoad* part = nullptr) const;
   // --backend as a Backend; vri::Error for another name.
   Backend parsed_backend() const { return parse_backend(backend); }
 };

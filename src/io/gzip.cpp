@@ -9,7 +9,8 @@
 
 namespace vri {
 
-std::size_t gunzip_into(std::span<const std::byte> in, std::size_t skip, std::span<std::byte> out) {
+std::uint64_t gunzip_each(std::span<const std::byte> in, std::uint64_t skip, std::uint64_t limit,
+                          const std::function<void(std::uint64_t, std::span<const std::byte>)>& sink) {
   z_stream zs{};
   if (inflateInit2(&zs, 15 + 32) != Z_OK) throw Error("zlib: cannot initialise inflate");
   const auto fail = [&](const std::string& what) {
@@ -18,36 +19,33 @@ std::size_t gunzip_into(std::span<const std::byte> in, std::size_t skip, std::sp
   };
   zs.next_in = reinterpret_cast<Bytef*>(const_cast<std::byte*>(in.data()));
   zs.avail_in = static_cast<uInt>(in.size());
-  // The skipped bytes go through a small buffer, the rest into `out`, a
-  // window of at most 1 GiB at a time (avail_out is 32-bit); one spare byte
-  // past the end catches a stream that holds more than it should.
-  std::byte spare[1 << 16];
-  std::size_t written = 0;
+  // Inflated a window at a time: the skipped bytes dropped, the rest handed
+  // on; one byte past `limit` is the error.
+  std::vector<std::byte> window(1 << 16);
+  std::uint64_t delivered = 0;
   int rc = Z_OK;
   while (rc != Z_STREAM_END) {
-    Bytef* window;
-    std::size_t room;
-    if (skip > 0) {
-      window = reinterpret_cast<Bytef*>(spare), room = std::min(skip, sizeof spare);
-    } else if (written < out.size()) {
-      window = reinterpret_cast<Bytef*>(out.data() + written), room = std::min<std::size_t>(out.size() - written, 1 << 30);
-    } else {
-      window = reinterpret_cast<Bytef*>(spare), room = 1;
-    }
-    zs.next_out = window;
-    zs.avail_out = static_cast<uInt>(room);
+    zs.next_out = reinterpret_cast<Bytef*>(window.data());
+    zs.avail_out = static_cast<uInt>(window.size());
     rc = inflate(&zs, Z_NO_FLUSH);
     if (rc != Z_OK && rc != Z_STREAM_END)
       fail(std::string("gzip data is corrupt or truncated") + (zs.msg ? std::string(" (") + zs.msg + ")" : ""));
-    const std::size_t got = room - zs.avail_out;
-    if (skip > 0) {
-      skip -= got;
-    } else if (written < out.size()) {
-      written += got;
-    } else if (got > 0) {
-      fail("gzip data expands beyond the expected " + std::to_string(out.size()) + " bytes");
+    std::span<const std::byte> got(window.data(), window.size() - zs.avail_out);
+    const std::uint64_t dropped = std::min<std::uint64_t>(skip, got.size());
+    skip -= dropped;
+    got = got.subspan(dropped);
+    if (got.size() > limit - delivered)
+      fail("gzip data expands beyond the expected " + std::to_string(limit) + " bytes");
+    if (!got.empty()) {
+      try {
+        sink(delivered, got);
+      } catch (...) {
+        inflateEnd(&zs);
+        throw;
+      }
+      delivered += got.size();
     }
-    if (rc == Z_OK && zs.avail_in == 0 && got == 0) fail("gzip data is truncated");
+    if (rc == Z_OK && zs.avail_in == 0 && zs.avail_out == window.size()) fail("gzip data is truncated");
     // Concatenated gzip members (`cat a.gz b.gz`, pigz, bgzip) form one
     // stream, as gzip -d reads them; bytes after the last member are ignored.
     if (rc == Z_STREAM_END && zs.avail_in >= 2 && zs.next_in[0] == 0x1f && zs.next_in[1] == 0x8b) {
@@ -56,7 +54,13 @@ std::size_t gunzip_into(std::span<const std::byte> in, std::size_t skip, std::sp
     }
   }
   inflateEnd(&zs);
-  return written;
+  return delivered;
+}
+
+std::size_t gunzip_into(std::span<const std::byte> in, std::size_t skip, std::span<std::byte> out) {
+  return gunzip_each(in, skip, out.size(), [&](std::uint64_t offset, std::span<const std::byte> bytes) {
+    std::copy(bytes.begin(), bytes.end(), out.begin() + static_cast<std::ptrdiff_t>(offset));
+  });
 }
 
 std::vector<std::byte> gzip(std::span<const std::byte> in) {

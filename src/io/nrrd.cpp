@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -16,6 +17,7 @@
 #include "gzip.hpp"
 #include "vri/core/error.hpp"
 #include "vri/io/file_io.hpp"
+#include "vri/io/grid_region.hpp"
 
 namespace vri {
 
@@ -196,9 +198,24 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
   // The first stored sample is the file's last one along a flipped axis.
   for (int a = 0; a < 3; ++a)
     if (flip[a]) origin[a] -= double(dims[a] - 1) * spacing[a];
+  const std::array<int, 3> grid{int(dims[0]), int(dims[1]), int(dims[2])};
   const auto volume = [&](GridVolume::Samples samples) {
-    flip_samples(samples, {int(dims[0]), int(dims[1]), int(dims[2])}, flip);
-    return checked([&] { return GridVolume({int(dims[0]), int(dims[1]), int(dims[2])}, std::move(samples), spacing, origin); });
+    flip_samples(samples, grid, flip);
+    return checked([&] { return GridVolume(grid, std::move(samples), spacing, origin); });
+  };
+  // One part (options.region): the region it picks, read from the file's
+  // mirror image of it along flipped axes, then flipped in place.
+  std::optional<GridRegion> region, stored;
+  if (options.region) {
+    region = options.region(grid);
+    check_region(*region, grid);
+    stored = region;
+    for (int a = 0; a < 3; ++a)
+      if (flip[a]) stored->lo[a] = grid[a] - 1 - region->hi[a], stored->hi[a] = grid[a] - 1 - region->lo[a];
+  }
+  const auto part = [&](GridVolume::Samples samples) {
+    flip_samples(samples, region->dims(), flip);
+    return checked([&] { return make_part(std::move(samples), grid, *region, spacing, origin); });
   };
 
   const std::string encoding = to_lower(required("encoding"));
@@ -256,6 +273,7 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
       start += std::uint64_t(byte_skip);
     }
     if (end - start != need) throw wrong_size(end - start);
+    if (region) return part(read_region_from_file(data_path, start, type, endian, grid, *stored));
     return volume(GridVolume::decode(type, endian, n, [&](std::span<std::byte> out) {
       read_file_range(data_path, start, out);
     }));
@@ -268,6 +286,11 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
       throw Error(where + " declares " + std::to_string(need) + " data bytes, more than its " +
                   std::to_string(end - start) + " gzip bytes can hold");
     const std::vector<std::byte> packed = rest();
+    if (region)  // read through once, keeping the region
+      return part(read_region_streamed(type, endian, grid, *stored, [&](const auto& piece) {
+        const std::uint64_t got = gunzip_each(packed, std::uint64_t(byte_skip), need, piece);
+        if (got != need) throw wrong_size(got);
+      }));
     return volume(GridVolume::decode(type, endian, n, [&](std::span<std::byte> out) {
       const std::size_t got = gunzip_into(packed, std::size_t(byte_skip), out);
       if (got != need) throw wrong_size(got);
@@ -283,6 +306,7 @@ GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
     const auto v = parse_numbers(text, "data");
     if (v.size() != n)
       throw Error(where + " holds " + std::to_string(v.size()) + " ascii values, expected " + std::to_string(n));
+    if (region) return cut_region(volume(std::vector<float>(v.begin(), v.end())), *region);
     return volume(std::vector<float>(v.begin(), v.end()));
   }
   throw Error(where + ": encoding '" + encoding + "' is not supported (raw, gzip, ascii)");

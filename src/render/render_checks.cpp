@@ -37,10 +37,10 @@ Bounds bounds_of(const Scene& scene) {
   return std::visit(
       [](const auto& v) {
         using V = std::decay_t<decltype(v)>;
-        double unit = 1.0;
-        if constexpr (std::is_same_v<V, GridVolume>) unit = v.voxel_unit();
-        else unit = v.mean_edge_length();
-        return Bounds{v.box_lo(), v.box_hi(), unit, double(v.min_value()), double(v.max_value())};
+        if constexpr (std::is_same_v<V, GridVolume>)  // a part of a grid: the whole grid's box
+          return Bounds{v.whole_lo(), v.whole_hi(), v.voxel_unit(), double(v.min_value()), double(v.max_value())};
+        else
+          return Bounds{v.box_lo(), v.box_hi(), v.mean_edge_length(), double(v.min_value()), double(v.max_value())};
       },
       scene.volume);
 }

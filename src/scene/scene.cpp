@@ -17,7 +17,7 @@ const TetMesh& Scene::mesh() const {
 }
 
 std::pair<Vec3, Vec3> bounds(const Volume& volume) {
-  if (const auto* g = std::get_if<GridVolume>(&volume)) return {g->box_lo(), g->box_hi()};
+  if (const auto* g = std::get_if<GridVolume>(&volume)) return {g->whole_lo(), g->whole_hi()};  // a part's whole grid
   const std::vector<Vec3>& points = std::get<TetMesh>(volume).points();
   Vec3 lo = points.front(), hi = points.front();
   for (const Vec3& p : points)

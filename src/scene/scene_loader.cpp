@@ -10,6 +10,7 @@
 #include <span>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include "vri/camera/framing.hpp"
 #include "vri/core/error.hpp"
@@ -156,7 +157,8 @@ constexpr std::array<std::string_view, 15> kVolumeKeys = {
     "builtin", "dims", "f_m", "alpha", "radius", "seed", "file", "type", "endian",
     "spacing", "origin", "scalars", "grid", "tets_per_cell", "allow_outside_paths"};
 
-GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r) {
+// `region`: read only the part it picks (PartialLoad); else the whole grid.
+GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r, const RegionChooser& region = {}) {
   r.object(j);
   r.known(j, kVolumeKeys);
   r.refused(j, {"grid", "tets_per_cell"}, "applies to tetrahedralized volumes only");
@@ -172,12 +174,12 @@ GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r
       return std::array<int, 3>{int(d[0]), int(d[1]), int(d[2])};
     };
     if (name == "marschner_lobb")
-      vol.emplace(marschner_lobb(dims_or({41, 41, 41}), r.number(j, "f_m", 6.0), r.number(j, "alpha", 0.25)));
+      vol.emplace(marschner_lobb(dims_or({41, 41, 41}), r.number(j, "f_m", 6.0), r.number(j, "alpha", 0.25), region));
     else if (name == "sphere")
-      vol.emplace(sphere_distance(dims_or({64, 64, 64}), r.number(j, "radius", 0.0)));
+      vol.emplace(sphere_distance(dims_or({64, 64, 64}), r.number(j, "radius", 0.0), region));
     else if (name == "random") {
       const auto seed = r.integer_in(j, "seed", 0, std::int64_t(1) << 53, 1);  // exact in JSON's doubles
-      vol.emplace(random_field(dims_or({32, 32, 32}), static_cast<std::uint64_t>(seed)));
+      vol.emplace(random_field(dims_or({32, 32, 32}), static_cast<std::uint64_t>(seed), region));
     } else
       r.expected("builtin", "marschner_lobb, sphere, random or tetrahedralized", j.at("builtin"));
   } else {
@@ -194,7 +196,7 @@ GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r
     const std::string scalars = r.string(j, "scalars", "");
     switch (format) {
       case VolumeFormat::Nrrd:
-        vol.emplace(read_nrrd(file, NrrdOptions{outside}));
+        vol.emplace(read_nrrd(file, NrrdOptions{outside, region}));
         break;
       case VolumeFormat::VolvisDat: vol.emplace(read_volvis_dat(file)); break;
       case VolumeFormat::Vti: vol.emplace(read_vti(file, scalars)); break;
@@ -214,12 +216,15 @@ GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r
         const ScalarType type = parse_scalar_type(r.string(j, "type", "uint8"));
         const std::string endian = r.string(j, "endian", "little");
         if (endian != "little" && endian != "big") r.expected("endian", "little or big", j.at("endian"));
-        vol.emplace(read_raw_volume(file, dims, type, endian == "big" ? Endian::Big : Endian::Little));
+        vol.emplace(read_raw_volume(file, dims, type, endian == "big" ? Endian::Big : Endian::Little, region));
         break;
       }
     }
   }
-  // Keys in the scene override the file's own header (SPEC §8).
+  // The sources that cannot seek are read whole, then cut.
+  if (region && !vol->brick()) vol.emplace(cut_region(*vol, region(vol->dims())));
+  // Keys in the scene override the file's own header (SPEC §8); a part
+  // moves with them as the whole grid does.
   if (j.contains("spacing")) {
     const Vec3 s = r.vec3(j, "spacing");
     if (!(s.x > 0 && s.y > 0 && s.z > 0)) r.expected("spacing", "three positive numbers", j.at("spacing"));
@@ -231,7 +236,7 @@ GridVolume grid_volume_from(const json& j, const fs::path& base, const Reader& r
 
 // A mesh file (.vtk, .vtu) or {"builtin": "tetrahedralized", "grid": {...},
 // "tets_per_cell": 5|6}; anything else is a grid.
-Volume volume_from(const json& j, const fs::path& base, const Reader& top) {
+Volume volume_from(const json& j, const fs::path& base, const Reader& top, const RegionChooser& region = {}) {
   const Reader r = top.child("volume");
   r.object(j);
   r.known(j, kVolumeKeys);
@@ -239,7 +244,7 @@ Volume volume_from(const json& j, const fs::path& base, const Reader& top) {
   fs::path file = j.contains("file") && !j.contains("builtin") ? fs::path(r.string(j, "file")) : fs::path();
   if (!file.empty() && file.is_relative()) file = base / file;
   const bool mesh = !file.empty() && is_mesh(volume_format(file));
-  if (!tetrahedralized && !mesh) return grid_volume_from(j, base, r);
+  if (!tetrahedralized && !mesh) return grid_volume_from(j, base, r, region);
   r.refused(j, {"spacing", "origin", "dims"}, "applies to grid volumes, not to meshes");
   if (tetrahedralized) {
     if (!j.contains("grid")) throw Error(r.ctx() + ": 'tetrahedralized' needs a 'grid' volume to split");
@@ -394,7 +399,8 @@ CameraSpec parse_camera(std::string_view text, const std::string& source) {
 namespace {
 
 // A scene from JSON; its volume read from the JSON's "volume", or `given`.
-Scene scene_from(std::string_view text, const fs::path& base, const std::string& source, std::optional<Volume> given) {
+Scene scene_from(std::string_view text, const fs::path& base, const std::string& source, std::optional<Volume> given,
+                 const PartialLoad* part = nullptr) {
   const json j = parse_json(text, source);
   const Reader r{source, ""};
   r.object(j);
@@ -428,7 +434,14 @@ Scene scene_from(std::string_view text, const fs::path& base, const std::string&
     tf.emplace(tfj, t.file, t.path, base, true);
   }
 
-  Volume volume = given ? std::move(*given) : volume_from(j.at("volume"), base, r);
+  RegionChooser region;
+  if (part) region = [&](std::array<int, 3> dims) { return part->region(dims, method); };
+  Volume volume = given ? std::move(*given) : volume_from(j.at("volume"), base, r, region);
+  if (auto* g = std::get_if<GridVolume>(&volume); g && part && g->brick()) {  // the whole grid's range
+    GridVolume::Brick b = *g->brick();
+    std::tie(b.whole_min, b.whole_max) = part->value_range(g->min_value(), g->max_value());
+    g->set_brick(b);
+  }
   const CameraSpec placed = place_camera(camera, &volume, r);
   TransferFunction resolved = tf->resolve(&volume);
   return Scene{std::move(volume), std::move(resolved), placed, lighting, background, method};
@@ -453,6 +466,12 @@ Volume load_volume(const fs::path& file, const std::string& scalars) {
 Scene load_scene(const fs::path& path) {
   const std::string source = "scene '" + printable(path.string()) + "'";
   return parse_scene(text_of(path), path.has_parent_path() ? path.parent_path() : fs::path("."), source);
+}
+
+Scene load_scene(const fs::path& path, const PartialLoad& part) {
+  const std::string source = "scene '" + printable(path.string()) + "'";
+  return scene_from(text_of(path), path.has_parent_path() ? path.parent_path() : fs::path("."), source, std::nullopt,
+                    &part);
 }
 
 }  // namespace vri

@@ -76,6 +76,9 @@ ValueRange percentile_range(const Volume& volume, double p_lo, double p_hi) {
   check_percentiles(p_lo, p_hi);
   if (const auto* m = std::get_if<TetMesh>(&volume)) return percentile_range(m->scalars(), p_lo, p_hi);
   const auto& g = std::get<GridVolume>(volume);
+  if (g.brick())
+    throw Error("a percentile range needs every sample, and this process holds one part of the grid: "
+                "give \"data\" or [lo, hi] for distributed rendering");
   const std::uint64_t n = g.size();
   if (n <= kExactPercentileSamples)
     return g.visit([&](auto v) { return exact_range(std::span(v.data(), v.size()), p_lo, p_hi); });

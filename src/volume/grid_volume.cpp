@@ -12,6 +12,13 @@
 
 namespace vri {
 
+namespace {
+
+// Point i of a grid on axis a, as GridVolume::box_hi computes it.
+double point(Vec3 origin, Vec3 spacing, int a, int i) { return origin[a] + i * spacing[a]; }
+
+}  // namespace
+
 std::uint64_t GridVolume::checked_sample_count(std::array<std::int64_t, 3> dims) {
   for (int a = 0; a < 3; ++a) {
     if (dims[a] < 2)
@@ -133,12 +140,18 @@ void GridVolume::set_spacing(Vec3 spacing) {
     if (!(spacing[a] > 0) || !std::isfinite(spacing[a]))
       throw Error("volume spacing must be positive and finite");
   spacing_ = spacing;
+  if (brick_) set_origin(brick_->whole_origin);  // a part moves with its offset
 }
 
 void GridVolume::set_origin(Vec3 origin) {
   for (int a = 0; a < 3; ++a)
     if (!std::isfinite(origin[a])) throw Error("volume origin must be finite");
-  origin_ = origin;
+  if (!brick_) {
+    origin_ = origin;
+    return;
+  }
+  brick_->whole_origin = origin;  // a part sits at its offset in the whole grid
+  for (int a = 0; a < 3; ++a) origin_[a] = point(origin, spacing_, a, brick_->offset[a]);
 }
 
 Vec3 GridVolume::box_hi() const {
@@ -146,29 +159,43 @@ Vec3 GridVolume::box_hi() const {
           origin_.z + (dims_[2] - 1) * spacing_.z};
 }
 
-void GridVolume::set_brick(const Brick& brick) {
-  brick_ = brick;
-  min_ = brick.whole_min;
-  max_ = brick.whole_max;
+void GridVolume::set_brick(const Brick& b) {
+  for (int a = 0; a < 3; ++a)
+    if (!(b.offset[a] >= 0 && b.offset[a] + dims_[a] <= b.whole_dims[a] && 0 <= b.own_lo[a] &&
+          b.own_lo[a] < b.own_hi[a] && b.own_hi[a] <= b.whole_dims[a] - 1))
+      throw Error("a brick must lie in its whole grid");
+  brick_ = b;
+  min_ = b.whole_min;
+  max_ = b.whole_max;
+  set_origin(b.whole_origin);
+}
+
+Vec3 GridVolume::whole_lo() const { return brick_ ? brick_->whole_origin : origin_; }
+
+Vec3 GridVolume::whole_hi() const {
+  if (!brick_) return box_hi();
+  const Brick& b = *brick_;
+  return {point(b.whole_origin, spacing_, 0, b.whole_dims[0] - 1), point(b.whole_origin, spacing_, 1, b.whole_dims[1] - 1),
+          point(b.whole_origin, spacing_, 2, b.whole_dims[2] - 1)};
 }
 
 std::optional<Interval> GridVolume::clip(const Ray& ray) const {
-  if (!brick_) return clip_to_box(ray, box_lo(), box_hi());
+  auto iv = clip_to_box(ray, whole_lo(), whole_hi());
+  if (!iv || !brick_) return iv;
   const Brick& b = *brick_;
-  auto iv = clip_to_box(ray, b.whole_lo, b.whole_hi);
-  if (!iv) return iv;
   // The owned window from the split planes alone: (plane - o) / d, the same
   // double on both sides of a plane.
   for (int a = 0; a < 3; ++a) {
-    const bool split_lo = b.own_lo[a] > b.whole_lo[a], split_hi = b.own_hi[a] < b.whole_hi[a];
+    const bool split_lo = b.own_lo[a] > 0, split_hi = b.own_hi[a] < b.whole_dims[a] - 1;
+    const double lo = point(b.whole_origin, spacing_, a, b.own_lo[a]);
+    const double hi = point(b.whole_origin, spacing_, a, b.own_hi[a]);
     const double o = ray.origin[a], d = ray.dir[a];
-    if (d == 0) {  // parallel to the planes: owned if o lies in [own_lo, own_hi)
-      if ((split_lo && o < b.own_lo[a]) || (split_hi && !(o < b.own_hi[a]))) return std::nullopt;
+    if (d == 0) {  // parallel to the planes: owned if o lies in [lo, hi)
+      if ((split_lo && o < lo) || (split_hi && !(o < hi))) return std::nullopt;
       continue;
     }
-    const double enter = d > 0 ? b.own_lo[a] : b.own_hi[a], leave = d > 0 ? b.own_hi[a] : b.own_lo[a];
-    if (d > 0 ? split_lo : split_hi) iv->own0 = std::max(iv->own0, (enter - o) / d);
-    if (d > 0 ? split_hi : split_lo) iv->own1 = std::min(iv->own1, (leave - o) / d);
+    if (d > 0 ? split_lo : split_hi) iv->own0 = std::max(iv->own0, ((d > 0 ? lo : hi) - o) / d);
+    if (d > 0 ? split_hi : split_lo) iv->own1 = std::min(iv->own1, ((d > 0 ? hi : lo) - o) / d);
   }
   if (!(iv->own1 > iv->own0) || iv->own1 <= iv->t0 || iv->own0 >= iv->t1) return std::nullopt;
   return iv;

@@ -146,5 +146,34 @@ TEST(BrickVolume, BricksCompositedFrontToBackGiveTheWholeRay) {
   }
 }
 
+// Rays in a split plane belong to one side (the half-open owned box): the
+// bricks add up to the whole ray, never twice it.
+TEST(BrickVolume, RaysInASplitPlaneHaveOneOwner) {
+  const GridVolume whole = field();
+  const KdBricks bricks(whole.dims(), 2);
+  const int axis = bricks.brick(0).hi[0] != whole.dims()[0] - 1 ? 0 : (bricks.brick(0).hi[1] != whole.dims()[1] - 1 ? 1 : 2);
+  const double plane = whole.origin()[axis] + bricks.brick(0).hi[axis] * whole.spacing()[axis];
+  MethodSpec exact;
+  exact.tolerance = 1e-8;
+  const auto one = make_integrator(exact, whole, kTf, {});
+  for (const Vec3 dir : {Vec3{0, 0.6, 0.8}, Vec3{0, 0, -1}, Vec3{0.8, 0, 0.6}, Vec3{0.6, 0.8, 0}}) {
+    if (dir[axis] != 0) continue;
+    Vec3 o = 0.5 * (whole.box_lo() + whole.box_hi()) - 30 * dir;
+    o[axis] = plane;
+    const Ray ray{o, dir};
+    int owners = 0;
+    double T = 1, C = 0;
+    for (int b = 0; b < 2; ++b) {
+      const GridVolume part = cut_brick(whole, bricks.brick(b), 3);
+      owners += part.clip(ray).has_value();
+      const Rgba v = make_integrator(exact, part, kTf, {})->integrate(ray);
+      C += T * v[0];
+      T *= 1 - v[3];
+    }
+    EXPECT_EQ(owners, 1);
+    EXPECT_NEAR(C, one->integrate(ray)[0], 1e-7);
+  }
+}
+
 }  // namespace
 }  // namespace vri::distributed

@@ -2,7 +2,8 @@
 # mpirun_test.sh VRI SOURCE_DIR: `mpirun -np N vri render` against one process
 # (SPEC §11: within 1e-6), and its failures (docs/DISTRIBUTED.md).
 # Every bundled grid scene on 4 ranks; exact, riemann, preint1 and preint2 on
-# 2, 3 and 8; adaptive against exact within its tolerance; then a rank that
+# 2, 3 and 8; adaptive against exact within its tolerance; a 256^3 volume
+# read by bricks (each rank's memory shows it); then a rank that
 # cannot read its scene, mismatched scenes, a rank that dies and a mesh scene:
 # each a non-zero exit, a line naming the rank, and no output file.
 set -u
@@ -44,6 +45,26 @@ scene=$src/scenes/marschner_lobb_lit.json
   2>/dev/null || fail "adaptive on 4 ranks"
 "$vri" compare "$tmp/exact.npy" "$tmp/adaptive.npy" --tolerance 1e-3 >"$tmp/cmp" && echo "ok: adaptive within 1e-3 of exact" ||
   { fail "adaptive on 4 ranks is over its tolerance:"; cat "$tmp/cmp"; }
+
+# Each rank reads its brick alone: on 4 ranks a 256^3 float built-in volume
+# (64 MiB) is at most 35% of it a rank, and a rank's peak memory under 75%
+# of one process's.
+cat >"$tmp/ml256.json" <<'JSON'
+{"volume": {"builtin": "marschner_lobb", "dims": [256, 256, 256]},
+ "transfer_function": {"points": [[0.0, 0.1, 0.2, 0.8, 0.0], [0.5, 0.9, 0.6, 0.2, 1.0], [1.0, 1.0, 1.0, 1.0, 4.0]]},
+ "camera": {"azimuth": 30, "elevation": 20}, "method": {"name": "preint1"}}
+JSON
+/usr/bin/time -f "%M" -o "$tmp/rss" "$vri" render "$tmp/ml256.json" -o "$tmp/one.npy" "${size[@]}" 2>/dev/null
+"${mpirun[@]}" -np 4 "$vri" render "$tmp/ml256.json" -o "$tmp/many.npy" "${size[@]}" 2>"$tmp/log"
+brick=$(sed -E 's/.*largest brick ([0-9]+) bytes.*/\1/' "$tmp/log")
+rss=$(sed -E 's/.*peak memory of a rank ([0-9]+) bytes.*/\1/' "$tmp/log")
+one=$(( $(cat "$tmp/rss") * 1024 ))
+if [ "$brick" -le $(( 64 * 1024 * 1024 * 35 / 100 )) ] && [ "$rss" -lt $(( one * 75 / 100 )) ]; then
+  echo "ok: 4 ranks read 256^3 by bricks: largest $brick bytes, peak $rss bytes a rank against $one for one process"
+else
+  fail "4 ranks on 256^3: largest brick $brick bytes, peak $rss bytes a rank, one process $one"
+fi
+"$vri" compare "$tmp/one.npy" "$tmp/many.npy" --tolerance 1e-6 >/dev/null || fail "256^3 on 4 ranks differs by more than 1e-6"
 
 refused() {  # refused WHAT PATTERN mpirun-args...: non-zero, PATTERN on stderr, no file
   local what=$1 pattern=$2

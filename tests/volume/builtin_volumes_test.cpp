@@ -45,5 +45,19 @@ TEST(RandomField, DeterministicUniformAndSeeded) {
   EXPECT_NEAR(mean, 0.5, 0.02);  // 4096 samples: sigma of the mean is 0.0045
 }
 
+// A part (distributed rendering's brick) holds the whole grid's values at its points.
+TEST(BuiltinVolumes, PartsHoldTheWholeGridsValues) {
+  const GridRegion region{{3, 0, 5}, {9, 6, 11}};
+  const auto pick = [&](std::array<int, 3>) { return region; };
+  const std::array<int, 3> dims{13, 9, 12};
+  for (const auto& [whole, part] : {std::pair{marschner_lobb(dims), marschner_lobb(dims, 6, 0.25, pick)},
+                                    std::pair{sphere_distance(dims), sphere_distance(dims, 0, pick)},
+                                    std::pair{random_field(dims, 9), random_field(dims, 9, pick)}}) {
+    ASSERT_TRUE(part.brick());
+    EXPECT_EQ(part.brick()->offset, region.lo);
+    EXPECT_EQ(test::floats(part), test::floats(cut_region(whole, region)));
+  }
+}
+
 }  // namespace
 }  // namespace vri

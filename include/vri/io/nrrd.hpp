@@ -3,6 +3,7 @@
 // raw, gzip and ascii encodings, either endianness.
 #include <filesystem>
 
+#include "vri/volume/grid_part.hpp"
 #include "vri/volume/grid_volume.hpp"
 #include "vri/volume/scalar_type.hpp"
 
@@ -18,8 +19,11 @@ namespace vri {
 // A detached header's `data file` is resolved against the header's folder and
 // may not leave it (absolute paths, "..", symlinks out) unless
 // allow_outside_paths (the scene volume key "allow_outside_paths").
+// With `region`, only the region it picks is read (a part, grid_part.hpp):
+// raw data by seeks, gzip read through once; ascii read whole and cut.
 struct NrrdOptions {
   bool allow_outside_paths = false;
+  RegionChooser region = {};
 };
 GridVolume read_nrrd(const std::filesystem::path& path, const NrrdOptions& options = {});
 

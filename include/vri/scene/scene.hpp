@@ -1,6 +1,8 @@
 #pragma once
 // Scene: everything one render needs (SPEC §8), loaded from a JSON file.
+#include <array>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -8,6 +10,7 @@
 
 #include "vri/camera/camera.hpp"
 #include "vri/integrators/method_spec.hpp"
+#include "vri/volume/grid_part.hpp"
 #include "vri/mesh/tet_mesh.hpp"
 #include "vri/shading/lighting.hpp"
 #include "vri/transfer/transfer_function.hpp"
@@ -39,10 +42,23 @@ Volume load_volume(const std::filesystem::path& file, const std::string& scalars
 // The box a volume fills: a grid's (SPEC §1), a mesh's points' bounding box.
 std::pair<Vec3, Vec3> bounds(const Volume& volume);
 
+// Loading one part of a grid scene (distributed rendering, docs/
+// DISTRIBUTED.md): `region` picks the points to read once the grid's dims are
+// known, given the scene's method (for the ghost layer it needs); raw and
+// NRRD files read only those, other sources are read whole and cut.
+// `value_range` turns the part's [min, max] into the whole grid's (an
+// allreduce; called once, after the part is read, by every rank that read
+// its part). A percentile "range" is refused: it needs every sample.
+struct PartialLoad {
+  std::function<GridRegion(std::array<int, 3> dims, const MethodSpec& method)> region;
+  std::function<std::pair<float, float>(float lo, float hi)> value_range;
+};
+
 // Loads a scene; relative paths inside it are relative to the scene file.
 // Every problem (missing file, bad JSON, wrong sizes, bad values) throws
 // vri::Error with one line naming the file and the key.
 Scene load_scene(const std::filesystem::path& path);
+Scene load_scene(const std::filesystem::path& path, const PartialLoad& part);
 Scene parse_scene(std::string_view json_text, const std::filesystem::path& base_dir,
                   const std::string& source_name = "scene");
 // A scene whose volume is given (built in memory: numpy arrays from Python)

@@ -100,22 +100,29 @@ class GridVolume {
   Vec3 box_lo() const { return origin_; }
   Vec3 box_hi() const;
 
-  // Sort-last rendering (distributed/): this volume may hold one brick of a
-  // larger grid, the points it owns and a ghost layer around them. Rays are
-  // then clipped to the whole grid's box, so that every sample stands where
-  // it stands on one machine, and a method integrates only the pieces of a
-  // ray whose front lies in the owned box (Interval::own0, own1): half open
-  // [own_lo, own_hi) across the split planes, so each piece has one owner.
-  // min_value() and max_value() are the whole grid's.
+  // Sort-last rendering (distributed/, docs/DISTRIBUTED.md): this volume may
+  // hold a part of a larger grid - the points offset .. offset + dims - 1 of
+  // it - and own the cells own_lo .. own_hi - 1 of the whole grid (its brick;
+  // the rest are a ghost layer). Rays are then clipped to the whole grid's
+  // box, so every sample stands where it stands on one machine, and a method
+  // integrates only the pieces of a ray whose front lies in the owned box
+  // (Interval::own0, own1): half open across the split planes, so each piece
+  // has one owner. origin() is whole_origin + offset spacing (set_origin sets
+  // the whole grid's), min_value() and max_value() are the whole grid's.
   struct Brick {
-    Vec3 whole_lo, whole_hi;  // the whole grid's box
-    Vec3 own_lo, own_hi;      // the owned box; faces on the whole box are not split planes
+    std::array<int, 3> whole_dims, offset;
+    Vec3 whole_origin;
+    std::array<int, 3> own_lo, own_hi;  // cells of the whole grid
     float whole_min, whole_max;
   };
+  // Throws vri::Error unless the part and the owned cells lie in the whole grid.
   void set_brick(const Brick& brick);
   const std::optional<Brick>& brick() const { return brick_; }
-  // The ray clipped to the box (the whole grid's for a brick) with the part
-  // this volume owns; nullopt where it misses the box or owns none of it.
+  // The whole grid's box (this volume's own unless a part).
+  Vec3 whole_lo() const;
+  Vec3 whole_hi() const;
+  // The ray clipped to the whole grid's box with the part this volume owns;
+  // nullopt where it misses the box or owns none of it.
   std::optional<Interval> clip(const Ray& ray) const;
   // min(sx, sy, sz): the unit of step sizes (SPEC §1).
   double voxel_unit() const;
