@@ -21,7 +21,7 @@ namespace vri::detail {
 bool packets_available() { return __builtin_cpu_supports("avx2"); }
 
 bool packets_fit(const GridVolume& volume) {
-  return packets_available() && volume.size() <= static_cast<std::size_t>(INT_MAX) && !volume.brick();
+  return packets_available() && volume.size() <= static_cast<std::size_t>(INT_MAX);
 }
 
 namespace {
@@ -43,7 +43,7 @@ unsigned enter(RayLanes& L, const GridVolume& volume, const FloatSampler& sample
                Rgba* out) {
   unsigned active = 0;
   for (int l = 0; l < kPacket; ++l) {
-    const auto iv = clip_to_box(rays[l], volume.box_lo(), volume.box_hi());
+    const auto iv = volume.clip(rays[l]);  // a brick's: the whole ray's interval and its owned window
     if (!iv) {
       out[l] = {0, 0, 0, 0};
       continue;
@@ -64,6 +64,7 @@ unsigned enter(RayLanes& L, const GridVolume& volume, const FloatSampler& sample
 template <int Steps>
 struct Lanes : RayLanes {
   alignas(32) int k[kPacket], stop[kPacket], full[kPacket];
+  bool partial[kPacket];  // the lane owns the partial last slab (march_float)
   // The slab's samples, front to back: scalar, entry and weight on the table axis.
   alignas(32) float s[Steps + 1][kPacket];
   alignas(32) int i[Steps + 1][kPacket];
@@ -476,13 +477,21 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
   unsigned active = enter(L, volume, sampler, rays, h, out);
   for (unsigned m = active; m; m &= m - 1) {
     const int l = __builtin_ctz(m);
-    L.full[l] = static_cast<int>(std::floor(L.iv[l].length() / (steps * h)));
+    // The owned slabs, as march_float takes them: full ones from k to full - 1, and the partial one.
+    const long long all = static_cast<long long>(std::floor(L.iv[l].length() / (steps * h)));
+    const PieceRange owned = owned_pieces(L.iv[l], steps * h, all + 1);
+    L.k[l] = static_cast<int>(owned.begin);
+    L.full[l] = static_cast<int>(std::min(owned.end, all));
+    L.partial[l] = owned.begin <= all && all < owned.end;
     L.t_check[l] = -std::numeric_limits<double>::infinity();
   }
   start_slab(sampler, values, lighting, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
   const auto finish = [&](int l) {
     const FloatSample front{L.s[0][l], {L.grad[0][0][l], L.grad[0][1][l], L.grad[0][2][l]}, {L.ta[0][l], L.tb[0][l]}};
-    out[l] = finish_float<steps>(sampler, values, tf, lighting, rays[l], L.iv[l], L.full[l], h, front, termination,
+    if (!L.partial[l])  // the partial slab is another brick's
+      out[l] = {L.r[l], L.g[l], L.b[l], 1 - L.T[l]};
+    else
+      out[l] = finish_float<steps>(sampler, values, tf, lighting, rays[l], L.iv[l], L.full[l], h, front, termination,
                                  Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
     active &= ~(1u << l);
   };
@@ -612,7 +621,9 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
   for (unsigned m = active; m; m &= m - 1) {
     const int l = __builtin_ctz(m);
     L.t0[l] = L.iv[l].t0, L.t1[l] = L.iv[l].t1;
-    L.n[l] = riemann_samples(L.iv[l], h);
+    const PieceRange owned = owned_pieces(L.iv[l], h, riemann_samples(L.iv[l], h));  // a brick's, else all
+    L.k[l] = static_cast<int>(owned.begin);
+    L.n[l] = owned.end;
   }
   const auto finish = [&](int l) {
     out[l] = {L.r[l], L.g[l], L.b[l], 1 - L.T[l]};

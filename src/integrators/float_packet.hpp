@@ -27,8 +27,7 @@ inline constexpr int kPacket = 8;
 // True where the build has the AVX2 packets (src/core/simd.hpp) and the CPU
 // has AVX2; else every march_*_packet is the scalar march, ray by ray.
 bool packets_available();
-// packets_available(), the volume's offsets fit 32-bit lanes and it is not
-// a brick (GridVolume::Brick: the packets march whole rays); else the
+// packets_available() and the volume's offsets fit 32-bit lanes; else the
 // integrators march the rays one by one.
 bool packets_fit(const GridVolume& volume);
 
