@@ -68,14 +68,12 @@ DistributedImage render_distributed(const MpiWorld& world, const Scene& scene, c
   DistributedImage out;
   const auto part = world.agreed([&] {
     check_method(scene);
+    // The part read by brick_region (PartialLoad) now owns its brick's cells.
     const GridVolume& grid = scene.grid();
-    // A part read by brick_region (PartialLoad) now owns its brick; a whole grid is cut.
-    const std::array<int, 3> dims = grid.brick() ? grid.brick()->whole_dims : grid.dims();
-    KdBricks bricks(dims, world.size());
-    const BrickCells& cells = bricks.brick(world.rank());
+    if (!grid.brick()) throw Error("render_distributed takes the part of the grid brick_region picks (PartialLoad)");
+    KdBricks bricks(grid.brick()->whole_dims, world.size());
     Scene local = scene;
-    if (grid.brick()) own_cells(std::get<GridVolume>(local.volume), cells);
-    else local.volume = cut_brick(grid, cells, ghost_points(scene.method));
+    own_cells(std::get<GridVolume>(local.volume), bricks.brick(world.rank()));
     auto p = std::make_shared<Part>(Part{std::move(bricks), std::move(local), nullptr});
     p->renderer = std::make_unique<const SceneRenderer>(p->scene);
     return p;

@@ -31,8 +31,8 @@ std::uint64_t fingerprint(std::uint64_t seed, std::string_view bytes);
 // if some rank's fingerprint differs from rank 0's.
 void check_same_job(const MpiWorld& world, std::uint64_t fingerprint);
 
-// Collective. Each rank passes the scene it loaded: the whole grid, or its
-// part as brick_region picks it (PartialLoad); a rank that fails anywhere
+// Collective. Each rank passes the scene it loaded with its part of the grid
+// as brick_region picks it (PartialLoad); a rank that fails anywhere
 // (bricking, tables, rendering, compositing) makes every rank throw
 // MpiWorld::JobFailed naming it.
 DistributedImage render_distributed(const MpiWorld& world, const Scene& scene, const RenderOptions& options);

@@ -34,6 +34,8 @@ int run_render_distributed(const DistributedJob&) {
 
 namespace {
 
+// Not read_file: /proc files report size 0, and a missing scene must not
+// throw here, before the first collective (load_scene says so, agreed).
 std::string file_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

@@ -41,6 +41,10 @@ std::uint64_t checked_file_size(const fs::path& path) {
 void read_file_range(const fs::path& path, std::uint64_t offset, std::span<std::byte> out) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
+  read_stream_range(in, path, offset, out);
+}
+
+void read_stream_range(std::istream& in, const fs::path& path, std::uint64_t offset, std::span<std::byte> out) {
   in.seekg(static_cast<std::streamoff>(offset));
   if (!in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(out.size())))
     throw FileError("cannot read " + std::to_string(out.size()) + " bytes at " + std::to_string(offset) + " of '" +

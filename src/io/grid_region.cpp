@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "vri/core/error.hpp"
+#include "vri/io/file_io.hpp"
 
 namespace vri {
 
@@ -47,10 +48,7 @@ GridVolume::Samples read_region_from_file(const std::filesystem::path& path, std
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
   return read_region(type, endian, dims, region, [&](std::uint64_t offset, std::span<std::byte> out) {
-    in.seekg(static_cast<std::streamoff>(start + offset));
-    if (!in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(out.size())))
-      throw FileError("cannot read " + std::to_string(out.size()) + " bytes at " + std::to_string(start + offset) +
-                      " of '" + path.string() + "'");
+    read_stream_range(in, path, start + offset, out);
   });
 }
 

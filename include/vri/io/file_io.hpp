@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <istream>
 #include <span>
 #include <vector>
 
@@ -17,6 +18,10 @@ std::uint64_t checked_file_size(const std::filesystem::path& path);
 // Reads out.size() bytes from `offset` on straight into `out` (a volume's own
 // storage: no file-sized copy beside it); throws vri::Error if it cannot.
 void read_file_range(const std::filesystem::path& path, std::uint64_t offset, std::span<std::byte> out);
+// The same from a stream already open on `path` (a reader of many ranges
+// opens the file once); errors name `path`.
+void read_stream_range(std::istream& in, const std::filesystem::path& path, std::uint64_t offset,
+                       std::span<std::byte> out);
 
 // Writes to a temporary file created exclusively beside `path`, then renames
 // it into place, so a failure never leaves a truncated output. Inside an
