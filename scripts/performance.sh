@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?usage: performance.sh OUT_DIR [BUILD_DIR]}; build=${2:-build}
-parts=" ${PARTS:-render tables lighting preint_render mesh vtk_mesh vtk_grid float_paths skipping macro_cells scaling brick_layout viewer} "
+parts=" ${PARTS:-render tables lighting preint_render mesh vtk_mesh vtk_grid float_paths skipping macro_cells scaling brick_layout viewer adaptive memory equal_error} "
 mkdir -p "$out"
 stamp() { echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"; }
 want() { [[ "$parts" == *" $1 "* ]]; }
@@ -47,17 +47,33 @@ if want vtk_mesh; then
 fi
 if want vtk_grid; then
   vtk_display
-  for s in neghip engine bonsai neghip_opaque neghip_spike; do
+  # The bundled views, then each dataset turned (issue 21: several cameras
+  # and transfer functions per dataset).
+  for view in "neghip" "engine" "bonsai" "neghip_opaque" "neghip_spike" "neghip --azimuth 90" \
+              "engine --azimuth 90 --elevation 30" "bonsai --azimuth 90"; do
+    read -r s motions <<<"$view"
+    # shellcheck disable=SC2086
     { stamp; DISPLAY=$display LP_NUM_THREADS=2 /usr/bin/python3 scripts/vtk_grid_side_by_side.py \
-        "scenes/$s.json" 512 "$out/side" --repeat 5; } >"$out/vtk_grid_$s.txt" 2>&1
+        "scenes/$s.json" 512 "$out/side" --repeat 5 $motions; } >"$out/vtk_grid_$s${motions:+_turned}.txt" 2>&1
   done
 fi
 if want float_paths; then { stamp; bash scripts/float_paths_ab.sh "$build" 5; } >"$out/float_paths.txt" 2>&1; fi
 if want skipping; then { stamp; bash scripts/skipping_study.sh "$build" 3; } >"$out/skipping.txt" 2>&1; fi
 if want macro_cells; then { stamp; "$build/bench/bench_macro_cells"; } >"$out/macro_cells.txt" 2>&1; fi
-if want scaling; then { stamp; bash scripts/scaling_study.sh "$build" 3; } >"$out/scaling.txt" 2>&1; fi
+if want scaling; then
+  { stamp; bash scripts/scaling_study.sh "$build" 3; } >"$out/scaling.txt" 2>&1
+  /usr/bin/python3 scripts/scaling_plot.py "$out/scaling.txt" docs/performance/scaling.png
+fi
 if want viewer; then { stamp; node viewer/bench/viewer_latency.mjs "$build/vri"; } >"$out/viewer.txt" 2>&1; fi
 if want brick_layout; then
   { stamp; "$build/bench/bench_brick_layout" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true; } \
     >"$out/brick_layout.txt" 2>&1
+fi
+if want adaptive; then { stamp; bash scripts/adaptive_speed.sh "$build" 3; } >"$out/adaptive.txt" 2>&1; fi
+if want memory; then { stamp; bash scripts/memory_study.sh "$build"; } >"$out/memory.txt" 2>&1; fi
+if want equal_error; then
+  for s in neghip bonsai; do
+    { stamp; /usr/bin/python3 tools/equal_error.py --vri "$build/vri" --scene "scenes/$s.json" --size 200 --repeat 2 \
+        --plot "docs/performance/equal_error_$s.png"; } >"$out/equal_error_$s.txt" 2>&1
+  done
 fi

@@ -8,10 +8,11 @@ import vtk
 from vtk.util import numpy_support as ns
 
 
-def scene_camera(vri, scene_path, size):
+def scene_camera(vri, scene_path, size, motions=()):
     """The camera vri renders `scene_path` through at size x size (SPEC §6 keys),
-    after its "fit" and motions: `vri camera`."""
-    out = subprocess.run([vri, "camera", scene_path, "--width", str(size), "--height", str(size)],
+    after its "fit" and motions and any more `motions` (vri's flags, such as
+    --azimuth 90): `vri camera`."""
+    out = subprocess.run([vri, "camera", scene_path, "--width", str(size), "--height", str(size), *motions],
                          check=True, capture_output=True, text=True).stdout
     return json.loads(out)
 

@@ -22,6 +22,13 @@ Each vri time is the fastest of --repeat renders as vri reports it (the render
 only: not loading the volume, building the macro cells or the table); each VTK
 time is the mean of --repeat frames after a first, untimed one.
 
+Equal error (issue 21): the rows "at VTK's error" are each vri method at the
+coarsest step of a ladder (preint1: 0.5 to 4 voxels, riemann: 0.25 to 2, with
+early termination below 0.002) whose RMS error is below the FixedPoint
+mapper's: the speed a user gets for the same picture quality. The last line says whether preint1 is there at least twice VTK's
+frame rate. --azimuth and --elevation turn the scene's camera (VTK's
+Azimuth and Elevation, as `vri render` applies them) for more views.
+
 Errors are over RGB composited on black (VTK's framebuffer alpha is not
 comparable); VTK's image is 8-bit, so vri's is also scored after rounding to
 8 bits ("RMS 8-bit"), which is what a screen shows.
@@ -46,10 +53,15 @@ ap.add_argument("--repeat", type=int, default=5)
 ap.add_argument("--exact-tolerance", default="1e-4")
 ap.add_argument("--no-gpu", action="store_true", help="leave out VTK's GPU mapper")
 ap.add_argument("--gl", default="Mesa llvmpipe, 2 threads", help="what OpenGL runs on, for the table")
+ap.add_argument("--azimuth", type=float, default=0, help="turn the camera about its up vector (degrees)")
+ap.add_argument("--elevation", type=float, default=0, help="raise the camera (degrees)")
 args = ap.parse_args()
 os.makedirs(args.out, exist_ok=True)
 size = args.size
-name = os.path.splitext(os.path.basename(args.scene))[0]
+motions = [*(["--azimuth", str(args.azimuth)] if args.azimuth else []),
+           *(["--elevation", str(args.elevation)] if args.elevation else [])]
+view = "".join(f"_{m[2:4]}{v}" for m, v in zip(motions[::2], motions[1::2]))
+name = os.path.splitext(os.path.basename(args.scene))[0] + view
 scene = json.load(open(args.scene))
 base = os.path.dirname(os.path.abspath(args.scene))
 vri = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "build", "vri")
@@ -117,13 +129,13 @@ prop.ShadeOff()
 
 
 # ---- vri ----
-def vri_render(method, extra=(), repeat=args.repeat):
+def vri_render(method, extra=(), repeat=args.repeat, step=1):
     out = os.path.join(args.out, f"{name}_vri_{method}{'_'.join(extra).replace('-', '_').replace('.', '')}.npy")
     best = None
     for _ in range(repeat):
-        r = subprocess.run([vri, "render", args.scene, "--method", method, "--step", "1", "--width", str(size), "--height",
-                            str(size), "--threads", "2", "-o", out, *extra], check=True, capture_output=True,
-                           text=True)
+        r = subprocess.run([vri, "render", args.scene, "--method", method, "--step", str(step), "--width", str(size),
+                            "--height", str(size), "--threads", "2", "-o", out, *motions, *extra], check=True,
+                           capture_output=True, text=True)
         m = re.search(r" in ([0-9.eE+-]+) s \(CPU ([0-9.eE+-]+) s\)", r.stderr)
         wall, cpu = float(m.group(1)), float(m.group(2))
         if best is None or wall < best[0]:
@@ -134,11 +146,12 @@ def vri_render(method, extra=(), repeat=args.repeat):
 exact_path = os.path.join(args.out, f"{name}_exact_{size}.npy")
 if not os.path.exists(exact_path):
     subprocess.run([vri, "render", args.scene, "--method", "exact", "--tolerance", args.exact_tolerance,
-                    "--width", str(size), "--height", str(size), "--threads", "2", "-o", exact_path], check=True)
+                    "--width", str(size), "--height", str(size), "--threads", "2", "-o", exact_path, *motions],
+                   check=True)
 exact = np.load(exact_path)[..., :3]
 
 # ---- VTK ----
-cam = scene_camera(vri, args.scene, size)
+cam = scene_camera(vri, args.scene, size, motions)
 
 
 def vtk_render(mapper, frames=args.repeat):
@@ -164,7 +177,15 @@ def gpu_mapper():
     return mapper
 
 
+def rms(img):
+    return float(np.sqrt(((img - exact) ** 2).mean()))
+
+
 rows = []
+img, t = vtk_render(fixed_point_mapper())
+np.save(os.path.join(args.out, f"{name}_vtk_fixedpoint.npy"), img)
+vtk_row = ("VTK FixedPoint, sample distance 1", img, t, False)
+vtk_ms, vtk_rms = t[0] * 1000, rms(img)
 for method in ["preint1", "riemann"]:
     variants = [((), "skipping"), (("--termination", "0.002"), "skipping + termination 0.002")]
     if method == "preint1":  # its float path is the default; --double is its double-precision reference
@@ -174,10 +195,18 @@ for method in ["preint1", "riemann"]:
     for extra, label in variants:
         img, t = vri_render(method, extra)
         rows.append((f"vri {method} step 1, {label}", img, t, True))
-img, t = vtk_render(fixed_point_mapper())
-np.save(os.path.join(args.out, f"{name}_vtk_fixedpoint.npy"), img)
-rows.append(("VTK FixedPoint, sample distance 1", img, t, False))
-vtk_ms = t[0] * 1000
+# At VTK's error: the coarsest step of each ladder below the FixedPoint mapper's RMS.
+ladders = {"preint1": [0.5, 0.75, 1, 1.25, 1.5, 2, 2.5, 3, 4], "riemann": [0.25, 0.375, 0.5, 0.75, 1, 1.5, 2]}
+equal = {}
+for method, steps in ladders.items():
+    extra = ("--termination", "0.002")
+    under = [step for step in steps if rms(vri_render(method, extra, repeat=1, step=step)[0]) < vtk_rms]
+    equal[method] = None
+    if under:
+        img, t = vri_render(method, extra, step=max(under))
+        rows.append((f"vri {method} step {max(under)}, termination 0.002: at VTK's error", img, t, True))
+        equal[method] = (max(under), t[0] * 1000)
+rows.append(vtk_row)
 if not args.no_gpu:
     img, t = vtk_render(gpu_mapper())
     np.save(os.path.join(args.out, f"{name}_vtk_gpu.npy"), img)
@@ -191,3 +220,12 @@ for label, img, (wall, cpu), is_vri in rows:
     d8 = (np.round(np.clip(img, 0, 1) * 255) / 255 - exact) if is_vri else d
     print(f"| {label} | {wall * 1000:.1f} | {cpu * 1000:.1f} | {vtk_ms / (wall * 1000):.2f} | "
           f"{np.sqrt((d ** 2).mean()):.5f} | {np.sqrt((d8 ** 2).mean()):.5f} | {np.abs(d).max():.3f} |")
+p = equal["preint1"]
+print()
+if p:
+    print(f"preint1 at VTK's error (step {p[0]}): {vtk_ms / p[1]:.2f}x VTK FixedPoint's frame rate "
+          f"(target 2x: {'met' if vtk_ms / p[1] >= 2 else 'not met'})")
+else:
+    print("preint1: no step of the ladder is below VTK FixedPoint's RMS error (target 2x: not met)")
+r = equal["riemann"]
+print(f"riemann at VTK's error: " + (f"step {r[0]}, {vtk_ms / r[1]:.2f}x VTK" if r else "not reached on the ladder"))

@@ -17,11 +17,18 @@ and for a tetrahedral mesh (a scene whose volume is a .vtk/.vtu file):
   tet-raycast, pt             (table size, length samples) (128, 64),
                               (256, 64), (256, 128), (512, 128)
 
+and the coarsest setting whose RMS error (over all channels and pixels) is
+at most 1e-3. Every setting is rendered, so that --plot can draw each
+method's error against its time (RMS and largest error, one panel per
+transfer function, log-log; issue 21, item 3): the method to pick for an
+error is the leftmost curve at that height.
+
 Times are whole `vri render` processes (table builds included), the best of
 --repeat, wall seconds. A method that does not reach 0 pixels over 1e-3 at
 its finest setting is reported with the share of pixels still over.
 
-    /usr/bin/python3 tools/equal_error.py --vri build/vri --scene scenes/neghip.json --size 200
+    /usr/bin/python3 tools/equal_error.py --vri build/vri --scene scenes/neghip.json --size 200 \
+        [--plot docs/performance/equal_error_neghip.png]
 """
 import argparse
 import json
@@ -69,47 +76,86 @@ def share_over(img, ref):
     return float(np.mean(np.any(np.abs(img - ref) > TOL, axis=-1)))
 
 
+def errors(img, ref):
+    """(share of pixels over 1e-3, RMS error, largest error) over all channels."""
+    d = img - ref
+    return share_over(img, ref), float(np.sqrt(np.mean(d ** 2))), float(np.abs(d).max())
+
+
+def summary(label, name, flag, points):
+    """The table row of one method from its (setting, time, share, rms, max)
+    points, coarsest first: the first setting with 0 pixels over, and the
+    first with RMS <= 1e-3."""
+    over = next((p for p in points if p[2] == 0), None)
+    rms = next((p for p in points if p[3] <= TOL), None)
+    last = points[-1]
+    where = f"{flag} {over[0]}" if over else f"not reached ({flag} {last[0]}: {100 * last[2]:.3f}% over)"
+    by_rms = f"{flag} {rms[0]} ({rms[1]:.3f} s)" if rms else "not reached"
+    return (label, name, where, (over or last)[1], by_rms)
+
+
 MESH_TABLES = [(128, 64), (256, 64), (256, 128), (512, 128)]
 
 
 def mesh_study(args, scene, label, tmp):
     ref, t_ref = render(args.vri, scene, tmp / "ref.npy", args.size, 1, "--method", "exact", "--tolerance", 1e-6)
-    rows = [(label, "exact 1e-6 (reference)", "-", t_ref, 0.0)]
+    rows, curves = [(label, "exact 1e-6 (reference)", "-", t_ref, "-")], {}
     base = json.loads(pathlib.Path(scene).read_text())
     for name in ["tet-raycast", "pt"]:
-        last = None
+        points = []
         for n, m in MESH_TABLES:
             variant = dict(base, method={"name": name, "table_size": n, "length_samples": m})
             path = tmp / "mesh.json"
             path.write_text(json.dumps(variant))
             img, t = render(args.vri, path, tmp / "m.npy", args.size, args.repeat)
-            last = (f"table {n}, {m} lengths", t, share_over(img, ref))
-            if last[2] == 0:
-                break
-        rows.append((label, name, last[0] if last[2] == 0 else f"not reached ({last[0]})", last[1], last[2]))
-    return rows
+            points.append((f"{n}/{m}", t, *errors(img, ref)))
+        rows.append(summary(label, name, "table/lengths", points))
+        curves[name] = points
+    return rows, curves
 
 
 def study(args, scene, label, tmp):
     ref, t_ref = render(args.vri, scene, tmp / "ref.npy", args.size, 1, "--method", "exact", "--tolerance", 1e-6)
-    rows = [(label, "exact 1e-6 (reference)", "-", t_ref, 0.0)]
+    rows, curves = [(label, "exact 1e-6 (reference)", "-", t_ref, "-")], {}
     methods = [("riemann", "--step", STEPS), ("preint1", "--step", STEPS), ("preint2", "--step", STEPS),
                ("adaptive guaranteed", "--tolerance", TOLERANCES), ("adaptive coupled", "--tolerance", TOLERANCES)]
     for name, flag, values in methods:
         base = ["--method", "adaptive", "--strategy", name.split()[1]] if name.startswith("adaptive") else \
                ["--method", name]
-        last = None
+        points = []
         for v in values:
             img, t = render(args.vri, scene, tmp / "m.npy", args.size, args.repeat, *base, flag, v)
-            last = (v, t, share_over(img, ref))
-            if last[2] == 0:
-                break
-        setting = f"{flag[2:]} {last[0]}"
-        rows.append((label, name, setting if last[2] == 0 else f"not reached ({setting})", last[1], last[2]))
+            points.append((v, t, *errors(img, ref)))
+        rows.append(summary(label, name, flag[2:], points))
+        curves[name] = points
     img, t = render(args.vri, scene, tmp / "m.npy", args.size, args.repeat, "--method", "preint2-dual")
-    s = share_over(img, ref)
-    rows.append((label, "preint2-dual", "reached" if s == 0 else "not reached", t, s))
-    return rows
+    points = [("-", t, *errors(img, ref))]
+    rows.append(summary(label, "preint2-dual", "its one setting", points))
+    curves["preint2-dual"] = points
+    return rows, curves
+
+
+def plot(path, title, panels):
+    """Error against time, one column per transfer function: RMS above, the
+    largest error below, each method a curve through its settings."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(2, len(panels), figsize=(4.2 * len(panels), 6.4), squeeze=False)
+    for col, (label, curves) in enumerate(panels):
+        for row, (k, what) in enumerate([(3, "RMS error"), (4, "largest error")]):
+            ax = axes[row][col]
+            for name, points in curves.items():
+                ax.plot([p[1] for p in points], [max(p[k], 1e-8) for p in points], "o-", ms=3, label=name)
+            ax.axhline(TOL, color="grey", lw=0.8, ls="--")
+            ax.set_xscale("log"), ax.set_yscale("log")
+            ax.set_xlabel("wall s (whole process)"), ax.set_ylabel(what)
+            if row == 0:
+                ax.set_title(label)
+    axes[0][0].legend(fontsize=7)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
 
 
 def main():
@@ -118,6 +164,7 @@ def main():
     ap.add_argument("--scene", type=pathlib.Path, default=pathlib.Path("scenes/neghip.json"))
     ap.add_argument("--size", type=int, default=200)
     ap.add_argument("--repeat", type=int, default=2)
+    ap.add_argument("--plot", type=pathlib.Path, help="write the error-against-time plot (PNG) here")
     args = ap.parse_args()
     base = json.loads(args.scene.read_text())
     # Paths in the scene are relative to it; the variants live beside it in a temporary folder.
@@ -127,8 +174,9 @@ def main():
     tf = base["transfer_function"]
     if "file" in tf:
         tf["file"] = str((args.scene.parent / tf["file"]).resolve())
-    print("| transfer function | method | coarsest setting with 0 pixels over 1e-3 | wall s | share over |")
+    print("| transfer function | method | coarsest setting with 0 pixels over 1e-3 | wall s | coarsest with RMS <= 1e-3 |")
     print("|---|---|---|---|---|")
+    panels = []
     mesh = vol.get("file", "").endswith((".vtk", ".vtu"))
     with tempfile.TemporaryDirectory() as d:
         tmp = pathlib.Path(d)
@@ -140,8 +188,12 @@ def main():
             scene = dict(base, transfer_function=tfj)
             path = tmp / "scene.json"
             path.write_text(json.dumps(scene))
-            for row in (mesh_study if mesh else study)(args, path, label, tmp):
-                print(f"| {row[0]} | {row[1]} | {row[2]} | {row[3]:.3f} | {100 * row[4]:.3f}% |", flush=True)
+            rows, curves = (mesh_study if mesh else study)(args, path, label, tmp)
+            for row in rows:
+                print(f"| {row[0]} | {row[1]} | {row[2]} | {row[3]:.3f} | {row[4]} |", flush=True)
+            panels.append((label, curves))
+    if args.plot:
+        plot(args.plot, f"{args.scene.stem}, {args.size}x{args.size}: error against time", panels)
 
 
 if __name__ == "__main__":

@@ -1,12 +1,14 @@
 #include "vri/integrators/adaptive_guaranteed.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "cubic.hpp"
 #include "simpson_colour_step.hpp"
 #include "tf_pieces.hpp"
 #include "vri/volume/cell_traversal.hpp"
+#include "vri/volume/empty_space.hpp"
 
 namespace vri {
 
@@ -49,7 +51,12 @@ GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& vol
                                                            const TransferFunction& tf,
                                                            const AdaptiveParams& params,
                                                            const Lighting& lighting)
-    : volume_(volume), tolerance_(params.tolerance) {
+    : volume_(volume),
+      tolerance_(params.tolerance),
+      zero_(tf),
+      margin_(1e-5 * (double(volume.max_value()) - volume.min_value() +
+                      std::max(std::abs(double(volume.min_value())), std::abs(double(volume.max_value()))))),
+      skipping_(volume, zero_, FastPath{}, "adaptive") {
   params.validate();
   if (lighting.enabled) shader_.emplace(lighting, volume);
   hmax_ = params.hmax * volume.voxel_unit();
@@ -66,6 +73,11 @@ GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& vol
 GuaranteedAdaptiveIntegrator::~GuaranteedAdaptiveIntegrator() = default;
 
 Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) const {
+  return volume_.visit([&](auto values) { return integrate_typed(values.data(), ray, stats); });
+}
+
+template <class Value>
+Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ray& ray, RayStats& stats) const {
   const auto iv = volume_.clip(ray);
   if (!iv) return {0, 0, 0, 0};
   const double colour_density = 0.45 * tolerance_ / iv->length();
@@ -77,6 +89,7 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
   double T = 1;
   double C[3] = {0, 0, 0};
 
+  const std::size_t sy = volume_.dims()[0], sz = sy * volume_.dims()[1];
   // Lit: the gradient along the current cell, three cubics in t from the cell entry.
   Cubic grad[3];
   // One smooth piece [x, y] (t from the cell entry) on transfer-function segment `seg`.
@@ -130,8 +143,16 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
 
   // A brick walks its own part (GridVolume::Brick); the densities above stay
   // the whole ray's, so the bricks' errors add up to one machine's budget.
-  for_each_cell_segment(volume_, ray, owned_part(*iv), [&](const CellSegment& cs) {
-    const Cubic s = trilinear_along(volume_, cs);
+  // Only the runs of non-empty macro cells are walked.
+  const auto walk_cell = [&](const CellSegment& cs) {
+    // A cell whose corners' range (with the macro cells' margin for
+    // rounding) has zero extinction is transparent on every piece: skipped
+    // before its cubic is built.
+    const std::array<float, 8> c = corners_as_float(values + volume_.index(cs.cell[0], cs.cell[1], cs.cell[2]), sy, sz);
+    const std::array<double, 8> corners = {c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]};
+    const auto [lo, hi] = std::minmax_element(corners.begin(), corners.end());
+    if (zero_.over(*lo - margin_, *hi + margin_)) return T > cutoff;
+    const Cubic s = trilinear_along(corners, cs);
     // Lit: |N.d| has a kink where N.d changes sign; pieces are cut there too.
     double kinks[3];
     int nkinks = 0;
@@ -144,6 +165,10 @@ Rgba GuaranteedAdaptiveIntegrator::integrate(const Ray& ray, RayStats& stats) co
         }
       integrate_piece(s, seg, cs.ta, x, y);
     });
+    return T > cutoff;
+  };
+  for_each_occupied_run(skipping_.space(), ray, owned_part(*iv), [&](const Interval& part) {
+    for_each_cell_segment(volume_, ray, part, walk_cell);
     return T > cutoff;
   });
   return {C[0], C[1], C[2], 1 - T};

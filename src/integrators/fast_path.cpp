@@ -1,6 +1,7 @@
 #include "vri/integrators/fast_path.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "vri/core/error.hpp"
 
@@ -20,13 +21,14 @@ TerminationBound termination_bound(const Image& image, double termination) {
 
 namespace detail {
 
-Skipping::Skipping(const GridVolume& volume, const ZeroOpacity& zero, const FastPath& fast, const std::string& method)
+Skipping::Skipping(const GridVolume& volume, ZeroOpacity zero, const FastPath& fast, const std::string& method)
     : termination_(fast.termination) {
   if (!(fast.termination >= 0 && fast.termination < 1))
     throw Error(method + ": termination must be in [0, 1), got " + std::to_string(fast.termination));
   if (!fast.skip_empty) return;
   cells_ = std::make_unique<MacroCells>(volume);
-  space_.emplace(*cells_, zero);
+  zero_.emplace(std::move(zero));
+  space_.emplace(*cells_, *zero_);
 }
 
 }  // namespace detail

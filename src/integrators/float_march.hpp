@@ -103,12 +103,16 @@ Float4 slab_colour(const Lookup& table, const typename Lookup::Spot& spot, const
 // double path: by the mean of the gradients at their ends (`sampled`) or
 // with their exactly weighted integrals (`interpolated`, exact_weighted_slab,
 // first order for both orders). Each sub-slab's premultiplied (r, g, b,
-// alpha), front to back; all zero when the ray ends on a whole slab. The GPU
-// backend composites the same values (vulkan/host/ray_setup.cpp).
+// alpha), front to back; all zero when the ray ends on a whole slab. A
+// sub-slab whose scalars `zero` (when given) finds in a zero-opacity range is
+// zero without integrating it: most rays leave the volume through empty
+// space, and the exact integral walks every table bin between the scalars.
+// The GPU backend composites the same values (vulkan/host/ray_setup.cpp).
 template <int Steps, class Value>
 std::array<Float4, Steps> last_slabs(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf,
                                      const FloatLighting& lighting, const Ray& ray, const Interval& iv,
-                                     long long full, double h, FloatSample front) {
+                                     long long full, double h, FloatSample front,
+                                     const ZeroOpacity* zero = nullptr) {
   std::array<Float4, Steps> out{};
   const double t_rest = iv.t0 + full * Steps * h;
   const double sub = (iv.t1 - t_rest) / Steps;
@@ -122,7 +126,9 @@ std::array<Float4, Steps> last_slabs(const FloatSampler& sampler, const Value* v
                     static_cast<float>(e.a)};
     };
     Float4& v = out[i - 1];
-    if (lighting.interpolated()) {
+    if (zero && zero->over(std::min(front.s, back.s), std::max(front.s, back.s))) {
+      v = Float4{0, 0, 0, 0};
+    } else if (lighting.interpolated()) {
       const SlabWeights w = exact_weighted_slab(tf, front.s, back.s, sub);
       v = lit_weighted(front.t, back.t, float4(w.front), float4(w.back));
     } else {
@@ -140,9 +146,9 @@ std::array<Float4, Steps> last_slabs(const FloatSampler& sampler, const Value* v
 template <int Steps, class Value>
 Rgba finish_float(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf,
                   const FloatLighting& lighting, const Ray& ray, const Interval& iv, long long full, double h,
-                  FloatSample front, float termination, Float4 C, float T) {
-  if (!(T < termination))
-    for (const Float4& v : last_slabs<Steps>(sampler, values, tf, lighting, ray, iv, full, h, front)) {
+                  FloatSample front, const Leap& leap, Float4 C, float T) {
+  if (!(T < static_cast<float>(leap.termination)))
+    for (const Float4& v : last_slabs<Steps>(sampler, values, tf, lighting, ray, iv, full, h, front, leap.zero)) {
       C += T * Float4{v[0], v[1], v[2], 0};
       T *= 1 - v[3];
     }
@@ -220,7 +226,7 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Va
     }
   }
   if (!(owned.begin <= all && all < owned.end)) return result();  // the partial slab is another brick's
-  return finish_float<steps>(sampler, values, tf, lighting, ray, *iv, full, h, p[0].sample, termination, C, T);
+  return finish_float<steps>(sampler, values, tf, lighting, ray, *iv, full, h, p[0].sample, leap, C, T);
 }
 
 }  // namespace vri::detail

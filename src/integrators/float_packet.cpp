@@ -485,19 +485,20 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     L.partial[l] = owned.begin <= all && all < owned.end;
     L.t_check[l] = -std::numeric_limits<double>::infinity();
   }
-  start_slab(sampler, values, lighting, axis, n, L, active);  // (a ray without full slabs uses only its front sample)
   const auto finish = [&](int l) {
     const FloatSample front{L.s[0][l], {L.grad[0][0][l], L.grad[0][1][l], L.grad[0][2][l]}, {L.ta[0][l], L.tb[0][l]}};
     if (!L.partial[l])  // the partial slab is another brick's
       out[l] = {L.r[l], L.g[l], L.b[l], 1 - L.T[l]};
     else
-      out[l] = finish_float<steps>(sampler, values, tf, lighting, rays[l], L.iv[l], L.full[l], h, front, termination,
+      out[l] = finish_float<steps>(sampler, values, tf, lighting, rays[l], L.iv[l], L.full[l], h, front, leap,
                                  Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
     active &= ~(1u << l);
   };
   // A lane at its stop: the head of march_float's outer loop (leap, next
   // stop) or, past its last full slab, its end. Returns whether it leapt (its
-  // new slab is then still to be found).
+  // new slab is then still to be found). A lane whose empty run reaches the
+  // ray's exit ends there: its remaining slabs and its partial slab lie in
+  // the run and add exactly nothing (EmptySpace), so it needs no samples.
   const auto head = [&](int l) {
     const long long k = L.k[l], full = L.full[l];
     if (k >= full) {
@@ -506,6 +507,11 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     }
     const long long j = leap_target(leap, rays[l], L.iv[l], h, steps, k, full, L.t_check[l]);
     L.k[l] = static_cast<int>(j);
+    if (j == full && j > k && L.t_check[l] >= L.iv[l].t1) {
+      out[l] = {L.r[l], L.g[l], L.b[l], 1 - L.T[l]};
+      active &= ~(1u << l);
+      return false;
+    }
     if (j < full)
       L.stop[l] = static_cast<int>(
           leap.space
@@ -513,6 +519,14 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
               : full);
     return j > k;
   };
+  // The first heads before the first samples: most rays enter through empty
+  // space and leap at once. Then every lane's slab is found (a ray without
+  // full slabs uses only its front sample, for its partial slab).
+  for (unsigned m = active; m; m &= m - 1)
+    if (const int l = __builtin_ctz(m); L.k[l] < L.full[l]) head(l);
+  start_slab(sampler, values, lighting, axis, n, L, active);
+  for (unsigned m = active; m; m &= m - 1)
+    if (const int l = __builtin_ctz(m); L.k[l] >= L.full[l]) finish(l);
   const __m256 one = _mm256_set1_ps(1), stop_at = _mm256_set1_ps(termination);
   const __m256i n8 = _mm256_set1_epi32(n);
   while (active) {

@@ -47,7 +47,7 @@ detail::FloatLighting float_lighting(const detail::FloatShading* shading, const 
 Rgba Preint1Integrator::integrate(const Ray& ray) const {
   using detail::march_uniform_slabs;
   using Table = PreintegrationTable;
-  const detail::Leap leap{fast_.space(), fast_.termination()};
+  const detail::Leap leap{fast_.space(), fast_.termination(), fast_.zero()};
   const detail::NoPrefetch none;
   if (float_math_)
     return volume_.visit([&](auto values) {
@@ -66,7 +66,7 @@ Rgba Preint1Integrator::integrate(const Ray& ray) const {
 void Preint1Integrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
   int i = 0;
   if (packets_) {
-    const detail::Leap leap{fast_.space(), fast_.termination()};
+    const detail::Leap leap{fast_.space(), fast_.termination(), fast_.zero()};
     for (; i + detail::kPacket <= n; i += detail::kPacket)
       detail::march_preint1_packet(volume_, float_sampler_, float_table_, tf_,
                                    float_lighting(float_shading_.get(), weighted_), rays + i, h_, leap, out + i);

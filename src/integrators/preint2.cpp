@@ -72,7 +72,7 @@ const SecondOrderTable& Preint2Integrator::table() const { return weighted_ ? we
 
 Rgba Preint2Integrator::integrate(const Ray& ray) const {
   using detail::march_uniform_slabs;
-  const detail::Leap leap{fast_.space(), fast_.termination()};
+  const detail::Leap leap{fast_.space(), fast_.termination(), fast_.zero()};
   if (float_table_)
     return volume_.visit([&](auto values) {
       return detail::march_float(volume_, float_sampler_, values.data(), *float_table_, tf_,
@@ -96,7 +96,7 @@ Rgba Preint2Integrator::integrate(const Ray& ray) const {
 void Preint2Integrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
   int i = 0;
   if (packets_) {
-    const detail::Leap leap{fast_.space(), fast_.termination()};
+    const detail::Leap leap{fast_.space(), fast_.termination(), fast_.zero()};
     for (; i + detail::kPacket <= n; i += detail::kPacket)
       detail::march_preint2_packet(volume_, float_sampler_, *float_table_, tf_,
                                    float_lighting(float_shading_.get(), weighted_), rays + i, h_, leap, out + i);

@@ -86,7 +86,7 @@ Preint2DualIntegrator::~Preint2DualIntegrator() = default;
 const SecondOrderLengthTable& Preint2DualIntegrator::table() const { return weighted_ ? weighted_->full : *table_; }
 
 Rgba Preint2DualIntegrator::integrate(const Ray& ray) const {
-  const detail::Leap leap{fast_.space(), fast_.termination()};
+  const detail::Leap leap{fast_.space(), fast_.termination(), fast_.zero()};
   if (float_table_)
     return volume_.visit([&](auto values) {
       return detail::march_cells_float(volume_, values.data(), *float_table_, float_shading_.get(),

@@ -74,6 +74,10 @@ struct NoPrefetch {
 struct Leap {
   const EmptySpace* space = nullptr;  // null: no skipping
   double termination = 0;             // 0: never stop early
+  // Pre-integrated methods with skipping: where the partial last slab's
+  // scalars lie in a zero-opacity range it adds exactly nothing, so its exact
+  // integral is not computed (the same bytes; null: always computed).
+  const ZeroOpacity* zero = nullptr;
 };
 
 // From slab k of `steps` steps of h (its front sample at t = t0 + k steps h,

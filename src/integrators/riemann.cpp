@@ -77,7 +77,7 @@ Rgba RiemannIntegrator::march(const Ray& ray, const Value* values) const {
 void RiemannIntegrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
   int i = 0;
   if (packets_) {
-    const detail::Leap leap{fast_.space(), fast_.termination()};
+    const detail::Leap leap{fast_.space(), fast_.termination(), fast_.zero()};
     for (; i + detail::kPacket <= n; i += detail::kPacket)
       detail::march_riemann_packet(volume_, float_sampler_, float_tf_, float_shading_.get(), rays + i, h_, leap,
                                    out + i);

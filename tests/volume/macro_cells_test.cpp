@@ -164,6 +164,53 @@ TEST(EmptySpace, RunsEndAtTheFacesOfNonEmptyCells) {
   EXPECT_DOUBLE_EQ(d.t_end, 40);  // leaves the macro grid at x = 32 (t = 33) still non-empty: t_max
 }
 
+// for_each_occupied_run hands out the non-empty runs in order, and they and
+// the leaps between them partition the interval: on the two-point volume
+// the ray x = -1 + t meets macro cells 0..3 along x; cells 2 and 3 (x 16..32,
+// t 17..33) hold the points and are walked, the rest leapt over.
+TEST(EmptySpace, OccupiedRunsPartitionTheRay) {
+  const GridVolume two = test::volume_from({41, 33, 33}, [](double x, double y, double z) {
+    return (x == 20 || x == 28) && y == 20 && z == 20 ? 50.0 : 0.0;
+  });
+  const MacroCells cells(two);
+  const TransferFunction tf = hat();
+  const EmptySpace space(cells, ZeroOpacity(tf));
+  const Ray ray{{-1, 20, 20}, {1, 0, 0}};
+  std::vector<std::pair<double, double>> parts;
+  for_each_occupied_run(&space, ray, Interval{1, 41}, [&](const Interval& part) {
+    parts.emplace_back(part.t0, part.t1);
+    return true;
+  });
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_DOUBLE_EQ(parts[0].first, 17);
+  EXPECT_DOUBLE_EQ(parts[0].second, 33);
+  // The visit may stop the walk; without a space the whole interval is one part.
+  int calls = 0;
+  for_each_occupied_run(nullptr, ray, Interval{1, 41}, [&](const Interval& part) {
+    EXPECT_EQ(part.t0, 1);
+    EXPECT_EQ(part.t1, 41);
+    return ++calls < 0;
+  });
+  EXPECT_EQ(calls, 1);
+  // Two occupied stretches: x = 20 and x = 36 lie in macro cells 2 (points
+  // 16..24, t 17..25) and 4 (points 32..40, t 33..41); cell 3 is leapt over.
+  const GridVolume gap = test::volume_from({41, 33, 33}, [](double x, double y, double z) {
+    return (x == 20 || x == 36) && y == 20 && z == 20 ? 50.0 : 0.0;
+  });
+  const MacroCells gap_cells(gap);
+  const EmptySpace gap_space(gap_cells, ZeroOpacity(tf));
+  parts.clear();
+  for_each_occupied_run(&gap_space, ray, Interval{1, 41}, [&](const Interval& part) {
+    parts.emplace_back(part.t0, part.t1);
+    return true;
+  });
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_DOUBLE_EQ(parts[0].first, 17);
+  EXPECT_DOUBLE_EQ(parts[0].second, 25);
+  EXPECT_DOUBLE_EQ(parts[1].first, 33);
+  EXPECT_DOUBLE_EQ(parts[1].second, 41);
+}
+
 // The ranges are computed once per volume and shared by its copies (a
 // transfer-function edit makes a new integrator, not new ranges); concurrent
 // first uses agree on one computation; another volume gets its own.

@@ -27,11 +27,19 @@
 // quarter voxel (the specular spike near a vanishing gradient is narrow).
 // Samples come from the cell's cubic and the piece's linear transfer-function
 // segment, so an evaluation costs a few multiplications.
+// Empty space (issue 21): the ray walks only the runs of macro cells that the
+// transfer function does not map to zero extinction everywhere
+// (volume/empty_space.hpp, the macro cells of the uniform marchers) and
+// leaps over the rest, whose pieces are transparent and take no samples
+// anyway: the image is the same up to the rounding of a run's first face. In
+// the runs, a cell whose corners' range has no extinction is skipped before
+// its cubic is built.
 #include <memory>
 #include <optional>
 
 #include "vri/integrators/adaptive_params.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
+#include "vri/integrators/fast_path.hpp"
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
@@ -51,11 +59,17 @@ class GuaranteedAdaptiveIntegrator final : public ErrorEstimatingIntegrator {
   std::string_view name() const override { return "adaptive"; }
 
  private:
+  template <class Value>  // on the volume's typed samples (GridVolume::visit)
+  Rgba integrate_typed(const Value* values, const Ray& ray, RayStats& stats) const;
+
   const GridVolume& volume_;
   double tolerance_;
   double hmax_, hfloor_;  // world units
   std::unique_ptr<const TfPieceSplitter> splitter_;
   std::optional<HeadlightShader> shader_;
+  ZeroOpacity zero_;           // where tf has no extinction
+  double margin_;              // EmptySpace's margin: rounding of interpolated scalars
+  detail::Skipping skipping_;  // the empty macro cells, against tf
 };
 
 }  // namespace vri

@@ -45,17 +45,20 @@ TerminationBound termination_bound(const Image& image, double termination);
 
 namespace detail {
 
-// What an integrator holds for its fast path: the macro cells of its volume
-// and their classification against its transfer function.
+// What an integrator holds for its fast path: the macro cells of its volume,
+// their classification against its transfer function and, to test slabs
+// against it, the transfer function's zero-opacity ranges.
 class Skipping {
  public:
   // Throws vri::Error unless 0 <= termination < 1.
-  Skipping(const GridVolume& volume, const ZeroOpacity& zero, const FastPath& fast, const std::string& method);
+  Skipping(const GridVolume& volume, ZeroOpacity zero, const FastPath& fast, const std::string& method);
   const EmptySpace* space() const { return space_ ? &*space_ : nullptr; }
+  const ZeroOpacity* zero() const { return zero_ ? &*zero_ : nullptr; }  // null without skipping
   double termination() const { return termination_; }
 
  private:
   std::unique_ptr<MacroCells> cells_;
+  std::optional<ZeroOpacity> zero_;
   std::optional<EmptySpace> space_;
   double termination_;
 };

@@ -49,4 +49,31 @@ class EmptySpace {
   std::vector<std::uint8_t> empty_;
 };
 
+// Calls visit(Interval part) for each run of non-empty macro cells along
+// [iv.t0, iv.t1] (part: iv with t0 and t1 those of the run), front to back,
+// until visit returns false; with no `space`, once for the whole of iv. The
+// runs and the leaps between them partition iv: an integrator that walks the
+// parts adds what it would add walking iv wherever the empty runs add
+// nothing. Where rounding at a face gives a run no length, the rest of iv
+// is one part (walking empty cells is never wrong, only slower).
+template <class Visit>
+void for_each_occupied_run(const EmptySpace* space, const Ray& ray, const Interval& iv, Visit&& visit) {
+  if (!space) {
+    visit(iv);
+    return;
+  }
+  for (double t = iv.t0; t < iv.t1;) {
+    const EmptySpace::Run run = space->run(ray, t, iv.t1);
+    const bool stuck = !(run.t_end > t);
+    if (!run.empty || stuck) {
+      Interval part = iv;
+      part.t0 = t;
+      part.t1 = stuck ? iv.t1 : run.t_end;
+      if (!visit(part)) return;
+      if (stuck) return;
+    }
+    t = run.t_end;
+  }
+}
+
 }  // namespace vri
