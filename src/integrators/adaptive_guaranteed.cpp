@@ -56,6 +56,7 @@ GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& vol
       zero_(tf),
       margin_(1e-5 * (double(volume.max_value()) - volume.min_value() +
                       std::max(std::abs(double(volume.min_value())), std::abs(double(volume.max_value()))))),
+      zero_bins_(zero_, volume.min_value() - margin_, volume.max_value() + margin_),
       skipping_(volume, zero_, FastPath{}, "adaptive") {
   params.validate();
   if (lighting.enabled) shader_.emplace(lighting, volume);
@@ -151,7 +152,7 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
     const std::array<float, 8> c = corners_as_float(values + volume_.index(cs.cell[0], cs.cell[1], cs.cell[2]), sy, sz);
     const std::array<double, 8> corners = {c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]};
     const auto [lo, hi] = std::minmax_element(corners.begin(), corners.end());
-    if (zero_.over(*lo - margin_, *hi + margin_)) return T > cutoff;
+    if (zero_bins_.over(*lo - margin_, *hi + margin_)) return T > cutoff;
     const Cubic s = trilinear_along(corners, cs);
     // Lit: |N.d| has a kink where N.d changes sign; pieces are cut there too.
     double kinks[3];

@@ -40,6 +40,11 @@ class TfPieceSplitter {
     }
     const int i0 = tf_.segment_index(smin), i1 = tf_.segment_index(smax);
     if (opaque_prefix_[i1 + 1] == opaque_prefix_[i0]) return;
+    if (i0 == i1) {  // one segment holds every value: the monotone pieces, with no search
+      for (int m = 0; m + 1 < nk; ++m)
+        if (knots[m + 1] > knots[m]) piece(knots[m], knots[m + 1], tf_.segments()[i0]);
+      return;
+    }
 
     auto emit = [&](double x, double y) {
       if (!(y > x)) return;

@@ -47,4 +47,14 @@ bool ZeroOpacity::over(double lo, double hi) const {
   return (a == 0 || first >= a + reach) && (b == axis_.n - 1 || last <= b - reach);
 }
 
+ZeroOpacityBins::ZeroOpacityBins(const ZeroOpacity& zero, double lo, double hi, int bins)
+    : lo_(lo), hi_(hi), scale_(hi > lo ? bins / (hi - lo) : 0), last_(bins - 1), marked_before_(bins + 1, 0) {
+  // A scalar that rounding puts a few ulps beyond its bin's ends stays covered.
+  const double margin = 1e-9 * (hi - lo + std::max(std::abs(lo), std::abs(hi)));
+  for (int i = 0; i < bins; ++i) {
+    const double a = lo + (hi - lo) * i / bins, b = i == bins - 1 ? hi : lo + (hi - lo) * (i + 1) / bins;
+    marked_before_[i + 1] = marked_before_[i] + (zero.over(a - margin, b + margin) ? 0 : 1);
+  }
+}
+
 }  // namespace vri

@@ -8,6 +8,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "tables/random_tf.hpp"
 #include "test_support.hpp"
 #include "vri/tables/second_order_table.hpp"
 #include "vri/tables/zero_opacity.hpp"
@@ -83,6 +84,36 @@ TEST(ZeroOpacity, FollowsTheEntriesABilinearLookupReads) {
   EXPECT_FALSE(zero.over(-5, 15));  // the lookup at 15 reads the entry at 20
   EXPECT_TRUE(zero.over(30, 100));
   EXPECT_FALSE(zero.over(25, 35));
+}
+
+// The binned test never calls a range empty that ZeroOpacity does not, and
+// still finds the wide empty runs: random spiky transfer functions, random
+// ranges inside and across the span, and ranges outside it (false).
+TEST(ZeroOpacityBins, ConservativeAgainstZeroOpacityAndFindsTheEmptyRuns) {
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const TransferFunction tf = test::random_spiky_tf(seed, 5);
+    const ZeroOpacity zero(tf);
+    const ZeroOpacityBins bins(zero, 0, 255, 512);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0, 255), w(0, 3);
+    int found = 0, empty = 0;
+    for (int k = 0; k < 20000; ++k) {
+      const double a = u(rng), b = std::min(255.0, a + w(rng));
+      const bool exact = zero.over(a, b), binned = bins.over(a, b);
+      ASSERT_FALSE(binned && !exact) << seed << ": [" << a << ", " << b << "]";
+      empty += exact;
+      found += binned;
+    }
+    // Bins are 0.5 wide: all but the ranges within about a bin of a control
+    // point of a zero-opacity run's ends are found.
+    EXPECT_GT(found, 0.8 * empty) << seed;
+    EXPECT_FALSE(bins.over(-1, 3));
+    EXPECT_FALSE(bins.over(250, 256));
+  }
+  const ZeroOpacityBins bins(ZeroOpacity(hat()), 0, 100, 1000);
+  EXPECT_TRUE(bins.over(0, 9.8));
+  EXPECT_FALSE(bins.over(9.8, 10.05));
+  EXPECT_TRUE(bins.over(30.2, 100));
 }
 
 // Table scalars x_i = i, i = 0 .. 100; tau = 0 exactly for i = 10 .. 90.
@@ -165,25 +196,31 @@ TEST(EmptySpace, RunsEndAtTheFacesOfNonEmptyCells) {
 }
 
 // for_each_occupied_run hands out the non-empty runs in order, and they and
-// the leaps between them partition the interval: on the two-point volume
-// the ray x = -1 + t meets macro cells 0..3 along x; cells 2 and 3 (x 16..32,
-// t 17..33) hold the points and are walked, the rest leapt over.
+// the leaps between them partition the interval: the ray x = -1 + t meets
+// macro cells 0..4 along x; with points at x = 20 and 28, cells 2 and 3
+// (x 16..32, t 17..33) hold them and are walked, the rest leapt over.
 TEST(EmptySpace, OccupiedRunsPartitionTheRay) {
-  const GridVolume two = test::volume_from({41, 33, 33}, [](double x, double y, double z) {
-    return (x == 20 || x == 28) && y == 20 && z == 20 ? 50.0 : 0.0;
-  });
-  const MacroCells cells(two);
   const TransferFunction tf = hat();
-  const EmptySpace space(cells, ZeroOpacity(tf));
   const Ray ray{{-1, 20, 20}, {1, 0, 0}};
-  std::vector<std::pair<double, double>> parts;
-  for_each_occupied_run(&space, ray, Interval{1, 41}, [&](const Interval& part) {
-    parts.emplace_back(part.t0, part.t1);
-    return true;
-  });
-  ASSERT_EQ(parts.size(), 1u);
-  EXPECT_DOUBLE_EQ(parts[0].first, 17);
-  EXPECT_DOUBLE_EQ(parts[0].second, 33);
+  // The parts of [1, 41] on a 41 x 33 x 33 grid with points of 50 at x = xs, y = z = 20.
+  const auto parts_with_points_at = [&](std::vector<double> xs) {
+    const GridVolume volume = test::volume_from({41, 33, 33}, [&](double x, double y, double z) {
+      return std::count(xs.begin(), xs.end(), x) && y == 20 && z == 20 ? 50.0 : 0.0;
+    });
+    const MacroCells cells(volume);
+    const EmptySpace space(cells, ZeroOpacity(tf));
+    std::vector<std::pair<double, double>> parts;
+    for_each_occupied_run(&space, ray, Interval{1, 41}, [&](const Interval& part) {
+      parts.emplace_back(part.t0, part.t1);
+      return true;
+    });
+    return parts;
+  };
+  using Parts = std::vector<std::pair<double, double>>;
+  EXPECT_EQ(parts_with_points_at({20, 28}), (Parts{{17, 33}}));
+  // x = 20 and x = 36 lie in macro cells 2 (points 16..24, t 17..25) and 4
+  // (points 32..40, t 33..41); cell 3 between them is leapt over.
+  EXPECT_EQ(parts_with_points_at({20, 36}), (Parts{{17, 25}, {33, 41}}));
   // The visit may stop the walk; without a space the whole interval is one part.
   int calls = 0;
   for_each_occupied_run(nullptr, ray, Interval{1, 41}, [&](const Interval& part) {
@@ -192,23 +229,6 @@ TEST(EmptySpace, OccupiedRunsPartitionTheRay) {
     return ++calls < 0;
   });
   EXPECT_EQ(calls, 1);
-  // Two occupied stretches: x = 20 and x = 36 lie in macro cells 2 (points
-  // 16..24, t 17..25) and 4 (points 32..40, t 33..41); cell 3 is leapt over.
-  const GridVolume gap = test::volume_from({41, 33, 33}, [](double x, double y, double z) {
-    return (x == 20 || x == 36) && y == 20 && z == 20 ? 50.0 : 0.0;
-  });
-  const MacroCells gap_cells(gap);
-  const EmptySpace gap_space(gap_cells, ZeroOpacity(tf));
-  parts.clear();
-  for_each_occupied_run(&gap_space, ray, Interval{1, 41}, [&](const Interval& part) {
-    parts.emplace_back(part.t0, part.t1);
-    return true;
-  });
-  ASSERT_EQ(parts.size(), 2u);
-  EXPECT_DOUBLE_EQ(parts[0].first, 17);
-  EXPECT_DOUBLE_EQ(parts[0].second, 25);
-  EXPECT_DOUBLE_EQ(parts[1].first, 33);
-  EXPECT_DOUBLE_EQ(parts[1].second, 41);
 }
 
 // The ranges are computed once per volume and shared by its copies (a

@@ -69,6 +69,7 @@ class GuaranteedAdaptiveIntegrator final : public ErrorEstimatingIntegrator {
   std::optional<HeadlightShader> shader_;
   ZeroOpacity zero_;           // where tf has no extinction
   double margin_;              // EmptySpace's margin: rounding of interpolated scalars
+  ZeroOpacityBins zero_bins_;  // zero_ in O(1) over the volume's range, for the cell test
   detail::Skipping skipping_;  // the empty macro cells, against tf
 };
 

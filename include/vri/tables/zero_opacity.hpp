@@ -26,6 +26,7 @@
 //   such macro cells reads zero entries (volume/empty_space.hpp).
 // Each query is O(1) after a binary search, so reclassifying every macro cell
 // after a transfer-function edit takes milliseconds (bench_macro_cells).
+#include <algorithm>
 #include <vector>
 
 #include "vri/tables/discrete_tf.hpp"
@@ -50,6 +51,29 @@ class ZeroOpacity {
   ScalarAxis axis_;
   TableOrder order_ = TableOrder::First;
   std::vector<int> opaque_before_;  // opaque_before_[i]: pieces (or table scalars) 0..i-1 with tau != 0
+};
+
+// ZeroOpacityBins: ZeroOpacity::over in O(1) without a search, for ranges
+// inside a known span [lo, hi] (a volume's range, with a margin), as a hot
+// loop needs it (the guaranteed adaptive integrator asks once per cell). The
+// span is cut into `bins` equal bins, each marked when ZeroOpacity::over
+// fails on it (widened by a rounding margin); over(a, b) is true only when
+// [a, b] lies in the span and no bin it touches is marked. Conservative: it
+// may say false where ZeroOpacity says true (a bin that a control point
+// cuts), never the reverse.
+class ZeroOpacityBins {
+ public:
+  ZeroOpacityBins(const ZeroOpacity& zero, double lo, double hi, int bins = 4096);
+  bool over(double a, double b) const {
+    if (!(a >= lo_ && b <= hi_)) return false;
+    return marked_before_[bin(b) + 1] == marked_before_[bin(a)];
+  }
+
+ private:
+  int bin(double s) const { return std::min(static_cast<int>((s - lo_) * scale_), last_); }
+  double lo_, hi_, scale_;
+  int last_;
+  std::vector<int> marked_before_;  // marked_before_[i]: marked bins among 0 .. i - 1
 };
 
 }  // namespace vri
