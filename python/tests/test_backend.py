@@ -88,3 +88,15 @@ def test_vulkan_adaptive_follows_the_cpu(root):
     assert (np.abs(gpu - cpu).max(-1) > 1e-4).mean() <= 0.01
     with pytest.raises(ValueError, match="at least 1e-5"):
         vri.render(scene, backend="vulkan", **dict(kw, tolerance=1e-6))
+
+
+@gpu
+def test_vulkan_guaranteed_adaptive_meets_its_tolerance(root):
+    scene = vri.load_scene(root / "scenes" / "neghip_spike.json")
+    exact = vri.render(scene, method="exact", tolerance=1e-7, **SMALL)
+    kw = dict(method="adaptive", strategy="guaranteed", tolerance=1e-3, **SMALL)
+    gpu = vri.render(scene, backend="vulkan", **kw)
+    assert np.abs(gpu - exact).max() <= 1e-3
+    assert gpu[..., 3].max() > 0.05
+    with pytest.raises(ValueError, match="at least 1e-4"):
+        vri.render(scene, backend="vulkan", **dict(kw, tolerance=5e-5))

@@ -5,7 +5,8 @@
 // field into up to four parts, and the rays into chunks, as a 256^3 scene
 // does on lavapipe (128 MiB), and the tables built on the GPU are written
 // into parts. The images must still match the CPU float path (on lavapipe:
-// to the byte) and the tables the CPU's, with the validation layer on.
+// to the byte; adaptive guaranteed: within its tolerance of `exact`) and the
+// tables the CPU's, with the validation layer on.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -67,6 +68,19 @@ Scene with(Scene scene, const char* method, int table_size, int width, int heigh
   return scene;
 }
 
+// adaptive guaranteed at 1e-3 on the GPU (float step decisions of its own):
+// within its tolerance of `exact`.
+void expect_guaranteed_within_tolerance(Scene scene) {
+  scene.method.strategy = "guaranteed";
+  scene.method.tolerance = 1e-3;
+  Scene exact = scene;
+  exact.method.name = "exact";
+  exact.method.tolerance = 1e-7;
+  const Image gpu = SceneRenderer(scene, Backend::Vulkan).render({.threads = 2});
+  EXPECT_LE(test::compare(gpu, SceneRenderer(exact).render({.threads = 2})).max, 1e-3);
+  EXPECT_GT(test::max_alpha(gpu), 0.05);
+}
+
 // A float volume of 41^3 (three parts), preint1's 256^2 table (four parts),
 // preint2's 40^3 (four), and 96 x 80 rays of up to 96 bytes (three chunks).
 TEST(SplitArrays, UnlitScenesMatchTheCpu) {
@@ -78,6 +92,7 @@ TEST(SplitArrays, UnlitScenesMatchTheCpu) {
   EXPECT_LE(test::gpu_against_cpu(with(scene, "riemann", 256, 96, 80)).max, 1e-4);
   EXPECT_LE(test::gpu_against_cpu(with(scene, "preint1", 256, 96, 80)).max, 1e-4);
   EXPECT_LE(test::gpu_against_cpu(with(scene, "preint2", 40, 96, 80)).max, 1e-4);
+  expect_guaranteed_within_tolerance(with(scene, "adaptive", 0, 96, 80));
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }
 
@@ -94,6 +109,7 @@ TEST(SplitArrays, LitScenesMatchTheCpu) {
     // 32 lengths of 12^3: four parts each.
     EXPECT_LE(test::gpu_against_cpu(with(scene, "preint2-dual", 12, 48, 40)).max, 1e-4) << mode;
   }
+  expect_guaranteed_within_tolerance(with(scene, "adaptive", 0, 48, 40));
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }
 

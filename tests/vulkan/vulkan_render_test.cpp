@@ -4,7 +4,8 @@
 // lavapipe the first three agree to the byte), on every bundled grid scene -
 // lit ones lit, the pre-integrated ones in both lighting modes - with riemann's jitter and early termination, and
 // on each storage type; empty-space skipping changing no byte; adaptive
-// (vulkan_adaptive.hpp) against the CPU's adaptive and `exact`. Run with the validation layer on (validation_on.cpp):
+// (vulkan_adaptive.hpp, vulkan_adaptive_guaranteed.hpp) against the CPU's
+// adaptive and `exact`. Run with the validation layer on (validation_on.cpp):
 // no message may appear.
 #include <gtest/gtest.h>
 
@@ -107,6 +108,33 @@ TEST_P(VulkanScene, AdaptiveFollowsTheCpu) {
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }
 
+// adaptive `guaranteed` (vulkan_adaptive_guaranteed.hpp) meets its tolerance
+// against `exact` on every pixel, as the CPU's does, at 1e-3 and at 1e-4;
+// its float step decisions leave the CPU's image on at most 1% of pixels.
+TEST_P(VulkanScene, GuaranteedAdaptiveMeetsTheTolerance) {
+  Scene scene = scene_with("adaptive");
+  scene.method.strategy = "guaranteed";
+  Scene exact = scene_with("exact");
+  exact.method.tolerance = 1e-7;
+  const Image reference = SceneRenderer(exact).render({.threads = 2});
+  for (const double tolerance : {1e-3, 1e-4}) {
+    scene.method.tolerance = tolerance;
+    const Image cpu = SceneRenderer(scene).render({.threads = 2});
+    const Image gpu = SceneRenderer(scene, Backend::Vulkan).render({.threads = 2});
+    EXPECT_LE(test::compare(gpu, reference).max, tolerance) << tolerance;
+    std::size_t apart = 0;
+    for (std::size_t i = 0; i < gpu.data().size(); i += 4) {
+      double m = 0;
+      for (int c = 0; c < 4; ++c) m = std::max(m, std::abs(double(gpu.data()[i + c]) - cpu.data()[i + c]));
+      apart += m > 1e-4;
+    }
+    EXPECT_LE(double(apart) / (gpu.data().size() / 4), 0.01) << tolerance;
+    // Not a blank image: the scene has something to get right.
+    EXPECT_GT(test::max_alpha(gpu), 0.05);
+  }
+  EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
+}
+
 // Empty-space skipping on the GPU (shaders/empty_space.glsl) leaps only over
 // what adds exactly nothing: the same bytes as marching through, on any device.
 TEST_P(VulkanScene, SkippingChangesNoPixel) {
@@ -155,7 +183,8 @@ TEST(VulkanBackend, NotOnTheGpuYetIsSaidInOneLine) {
   EXPECT_THROW(SceneRenderer(scene, Backend::Vulkan), Error) << "exact";
   scene.method.name = "adaptive";
   scene.method.strategy = "guaranteed";
-  EXPECT_THROW(SceneRenderer(scene, Backend::Vulkan), Error) << "guaranteed";
+  scene.method.tolerance = 5e-5;
+  EXPECT_THROW(SceneRenderer(scene, Backend::Vulkan), Error) << "guaranteed: a tolerance float cannot meet";
   scene.method.strategy = "coupled";
   scene.method.tolerance = 1e-6;
   EXPECT_THROW(SceneRenderer(scene, Backend::Vulkan), Error) << "a tolerance float cannot meet";
@@ -179,7 +208,8 @@ TEST(VulkanBackend, LargeImagesRunInChunks) {
 
 // Each storage type of GridVolume (uint8, uint16, int16, float), unpacked
 // from 32-bit words on the GPU, with odd dims (a row is not a whole number of
-// words) and a transfer function with a spike narrower than a voxel's change.
+// words) and a transfer function with a spike narrower than a voxel's change;
+// adaptive guaranteed against `exact`.
 TEST(VulkanBackend, EveryStorageTypeMatches) {
   const std::array<int, 3> dims = {13, 11, 9};
   const std::size_t n = std::size_t(13) * 11 * 9;
@@ -219,6 +249,16 @@ TEST(VulkanBackend, EveryStorageTypeMatches) {
       scene.method.name = method;
       EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << method << " " << samples.index();
     }
+    // adaptive guaranteed (float step decisions of its own): within its tolerance of `exact`.
+    scene.method.name = "exact";
+    scene.method.tolerance = 1e-7;
+    const Image reference = SceneRenderer(scene).render({.threads = 2});
+    scene.method.name = "adaptive";
+    scene.method.strategy = "guaranteed";
+    scene.method.tolerance = 1e-3;
+    const Image gpu = SceneRenderer(scene, Backend::Vulkan).render({.threads = 2});
+    EXPECT_LE(test::compare(gpu, reference).max, 1e-3) << "guaranteed " << samples.index();
+    EXPECT_GT(test::max_alpha(gpu), 0.05);
   }
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }

@@ -35,9 +35,6 @@ VulkanAdaptive::VulkanAdaptive(std::shared_ptr<const VulkanDevice> device, const
   const MethodSpec& m = scene.method;
   const AdaptiveParams params{m.tolerance, m.h0, m.hmin, m.hmax, parse_adaptive_strategy(m.strategy)};
   params.validate();
-  if (params.strategy == AdaptiveStrategy::Guaranteed)
-    throw Error("--backend vulkan: adaptive strategy 'guaranteed' is not on the GPU yet; coupled and decoupled are "
-                "(docs/GPU.md)");
   if (params.tolerance < kMinTolerance)
     throw Error("--backend vulkan: adaptive computes in float on the GPU; its tolerance must be at least 1e-5, got " +
                 std::to_string(params.tolerance));

@@ -6,7 +6,7 @@
 // CPU's to the byte; it is held to the same error against `exact`
 // (docs/GPU.md). Tolerances below 1e-5 are refused: float roundings in the
 // estimates would then drive every step to hmin. The `guaranteed` strategy
-// is not on the GPU yet.
+// is vulkan_adaptive_guaranteed.hpp.
 #include <memory>
 #include <optional>
 

@@ -5,9 +5,11 @@
 #include <vector>
 
 #include "vri/core/error.hpp"
+#include "vri/integrators/adaptive_params.hpp"
 #include "vri/render/backend.hpp"
 #include "vri/scene/scene.hpp"
 #include "vulkan_adaptive.hpp"
+#include "vulkan_adaptive_guaranteed.hpp"
 #include "vulkan_device.hpp"
 #include "vulkan_preint.hpp"
 #include "vulkan_preint2_dual.hpp"
@@ -28,6 +30,8 @@ std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene)
   if (!scene.method.fast.float_math)
     throw Error("--backend vulkan: the GPU computes in float; --double needs --backend cpu");
   if (m == "riemann") return std::make_unique<vulkan::VulkanRiemann>(vulkan::VulkanDevice::shared(), scene);
+  if (m == "adaptive" && parse_adaptive_strategy(scene.method.strategy) == AdaptiveStrategy::Guaranteed)
+    return std::make_unique<vulkan::VulkanGuaranteedAdaptive>(vulkan::VulkanDevice::shared(), scene);
   if (m == "adaptive") return std::make_unique<vulkan::VulkanAdaptive>(vulkan::VulkanDevice::shared(), scene);
   if (m == "preint2-dual") return std::make_unique<vulkan::VulkanPreint2Dual>(vulkan::VulkanDevice::shared(), scene);
   return std::make_unique<vulkan::VulkanPreint>(vulkan::VulkanDevice::shared(), scene);

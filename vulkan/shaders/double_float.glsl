@@ -47,3 +47,21 @@ DF df_mul(DF a, DF b) {
   precise float lo = p.lo + (a.hi * b.lo + a.lo * b.hi);
   return df_fast_two_sum(p.hi, lo);
 }
+
+DF df_neg(DF a) { return DF(-a.hi, -a.lo); }
+DF df_sub(DF a, DF b) { return df_add(a, df_neg(b)); }
+bool df_less(DF a, DF b) { return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo); }
+DF df_min(DF a, DF b) { return df_less(b, a) ? b : a; }
+float df_floor(DF a) {
+  float f = floor(a.hi);
+  if (f == a.hi && a.lo < 0.0) f -= 1.0;
+  return f;
+}
+float df_float(DF a) { return a.hi + a.lo; }
+// a / b to about 44 bits (one correction step).
+DF df_div(DF a, DF b) {
+  precise float q1 = a.hi / b.hi;
+  const DF r = df_sub(a, df_mul(DF(q1, 0.0), b));
+  precise float q2 = r.hi / b.hi;
+  return df_two_sum(q1, q2);
+}

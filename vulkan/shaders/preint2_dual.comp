@@ -8,8 +8,8 @@
 // cubic - is sampled at its front, middle and back from the cell's eight
 // corners, looked up in the (l, s_f, s_m, s_b) table (the paper's 4D table:
 // `lengths` slices from 0 to max_length, linear in l) and composited front to
-// back. The walk is in double-float from the ray's entry, so the pieces are
-// the CPU's up to roundings. Lit as preint2 (p.lit: 1 sampled, 2
+// back. The walk (cell_walk.glsl) is in double-float from the ray's entry,
+// so the pieces are the CPU's up to roundings. Lit as preint2 (p.lit: 1 sampled, 2
 // interpolated with the middle and back weighted tables). A piece whose
 // cell's macro cell is empty (classified for second-order entries) adds
 // exactly nothing and is not sampled (p.skip).
@@ -57,27 +57,7 @@ const uint kRayFloats = 17u;
 DF u0[3], du[3];
 vec3 d;
 #include "empty_space.glsl"
-
-DF df_neg(DF a) { return DF(-a.hi, -a.lo); }
-DF df_sub(DF a, DF b) { return df_add(a, df_neg(b)); }
-bool df_less(DF a, DF b) { return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo); }
-DF df_min(DF a, DF b) { return df_less(b, a) ? b : a; }
-float df_floor(DF a) {
-  float f = floor(a.hi);
-  if (f == a.hi && a.lo < 0.0) f -= 1.0;
-  return f;
-}
-// a / b to about 44 bits (one correction step).
-DF df_div(DF a, DF b) {
-  precise float q1 = a.hi / b.hi;
-  const DF r = df_sub(a, df_mul(DF(q1, 0.0), b));
-  precise float q2 = r.hi / b.hi;
-  return df_two_sum(q1, q2);
-}
-DF position(int a, DF t) { return df_add(u0[a], df_mul(du[a], t)); }
-
-// Where the ray crosses plane `plane` of axis a.
-DF crossing(int a, float plane) { return df_div(df_sub(DF(plane, 0.0), u0[a]), du[a]); }
+#include "cell_walk.glsl"
 
 // The table at slab length l and scalars (s_f, s_m, s_b): the two slices
 // around l (length_bracket, slab_table.hpp) blended linearly.
@@ -103,38 +83,20 @@ void main() {
   d = vec3(rays.r[r + 14u], rays.r[r + 15u], rays.r[r + 16u]);
   precise vec3 C = vec3(0.0);
   precise float T = 1.0;
-  int dir[3];
-  float plane[3];
-  DF t_next[3];
-  const DF never = DF(3.0e38, 0.0);
-  for (int a = 0; a < 3; ++a) {
-    dir[a] = du[a].hi > 0.0 ? 1 : (du[a].hi < 0.0 ? -1 : 0);
-    plane[a] = dir[a] > 0 ? df_floor(u0[a]) + 1.0 : -df_floor(df_neg(u0[a])) - 1.0;
-    t_next[a] = dir[a] != 0 ? crossing(a, plane[a]) : never;
-  }
-  DF ta = DF(0.0, 0.0);
-  while (t_end.hi > 0.0 && df_less(ta, t_end)) {
+  CellWalk w = walk_start();
+  while (t_end.hi > 0.0 && df_less(w.ta, t_end)) {
     if (T < p.termination) break;
-    const DF tb = df_min(df_min(t_next[0], t_next[1]), df_min(t_next[2], t_end));
-    for (int a = 0; a < 3; ++a)
-      while (dir[a] != 0 && !df_less(tb, t_next[a])) {
-        plane[a] += float(dir[a]);
-        t_next[a] = crossing(a, plane[a]);
-      }
+    const DF ta = w.ta, tb = walk_next(w, t_end);
     if (df_less(ta, tb)) {
       const DF tm = df_mul(df_add(ta, tb), DF(0.5, 0.0));
       const DF t3[3] = DF[3](ta, tm, tb);
       Cell cell[3];
-      ivec3 index;
-      for (int a = 0; a < 3; ++a) index[a] = int(clamp(df_floor(position(a, tm)), 0.0, float(p.last_cell[a])));
+      const ivec3 index = piece_cell(ta, tb);
       const uint offset = uint(index.x) + p.sy * uint(index.y) + p.sz * uint(index.z);
       for (int k = 0; k < 3; ++k) {
         cell[k].offset = offset;
         cell[k].index = index;
-        for (int a = 0; a < 3; ++a) {
-          const DF local = df_sub(position(a, t3[k]), DF(float(index[a]), 0.0));
-          cell[k].f[a] = clamp(local.hi + local.lo, 0.0, 1.0);
-        }
+        cell[k].f = clamp(local_in(index, t3[k]), 0.0, 1.0);
       }
       if (!macro_empty(cell[0])) {
         const DF length = df_sub(tb, ta);
@@ -170,7 +132,7 @@ void main() {
         T *= 1.0 - v.a;
       }
     }
-    ta = tb;
+    w.ta = tb;
   }
   image.px[pixel] = vec4(C, 1.0 - T);
 }
