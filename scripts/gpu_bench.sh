@@ -4,7 +4,7 @@
 # run: the frame time of `preint1`, `preint2`, `preint2-dual`, `riemann`
 # (step 1), `adaptive` (coupled, tolerance 1e-3) and `adaptive` guaranteed
 # (tolerance 1e-3, "guaranteed" below) at 512 x 512 on neghip
-# and bonsai, the fastest of REPEATS renders as `vri render` reports them
+# and bonsai, and `tet-raycast` on the blunt fin mesh, the fastest of REPEATS renders as `vri render` reports them
 # (the render alone: rays set up, the dispatch, the image read back; not the volume
 # upload or the table build), with the largest difference between the two
 # images (adaptive: step decisions in float against double, docs/GPU.md)
@@ -38,22 +38,28 @@ best() {
 echo
 echo "| scene | method | CPU ms (2 threads) | Vulkan ms ($label) | CPU / Vulkan | Vulkan ms, no skipping | max difference |"
 echo "|---|---|---|---|---|---|---|"
+runs=()
 for scene in neghip bonsai; do
-  for method in preint1 preint2 preint2-dual riemann adaptive guaranteed; do
-    args=(scenes/$scene.json --method "$method" --step 1 --width 512 --height 512)
-    [ "$method" = adaptive ] && args+=(--strategy coupled --tolerance 1e-3)
-    [ "$method" = guaranteed ] && args=(scenes/$scene.json --method adaptive --strategy guaranteed --tolerance 1e-3
-                                        --width 512 --height 512)
-    cpu=$(best render "${args[@]}" -o "$tmp/cpu.npy" --threads 2)
-    gpu=$(best render "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
-    # Empty-space skipping off (adaptive skips transparent intervals its own way).
-    march=-1
-    [ "$method" != adaptive ] && march=$(best render "${args[@]}" -o "$tmp/march.npy" --backend vulkan --no-skip)
-    diff=$("$vri" compare "$tmp/gpu.npy" "$tmp/cpu.npy" --tolerance 1e-4 | awk 'NR > 1 { if ($4 > m) m = $4 } END { printf "%.1e", m }')
-    awk -v s="$scene" -v m="$method" -v c="$cpu" -v g="$gpu" -v n="$march" -v d="$diff" \
-      'BEGIN { printf "| %s | %s | %.1f | %.1f | %.2f | %s | %s |\n", s, m, 1000 * c, 1000 * g, c / g,
-               n < 0 ? "—" : sprintf("%.1f", 1000 * n), d }'
-  done
+  for method in preint1 preint2 preint2-dual riemann adaptive guaranteed; do runs+=("$scene $method"); done
+done
+runs+=("blunt_fin tet-raycast")  # a tetrahedral mesh (187k tetrahedra), the default 256² x 64 table
+for run in "${runs[@]}"; do
+  read -r scene method <<< "$run"
+  args=(scenes/$scene.json --method "$method" --width 512 --height 512)
+  [ "$method" != tet-raycast ] && args+=(--step 1)
+  [ "$method" = adaptive ] && args+=(--strategy coupled --tolerance 1e-3)
+  [ "$method" = guaranteed ] && args=(scenes/$scene.json --method adaptive --strategy guaranteed --tolerance 1e-3
+                                      --width 512 --height 512)
+  cpu=$(best render "${args[@]}" -o "$tmp/cpu.npy" --threads 2)
+  gpu=$(best render "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
+  # Empty-space skipping off (adaptive skips transparent intervals its own way; meshes have none).
+  march=-1
+  [ "$method" != adaptive ] && [ "$method" != tet-raycast ] &&
+    march=$(best render "${args[@]}" -o "$tmp/march.npy" --backend vulkan --no-skip)
+  diff=$("$vri" compare "$tmp/gpu.npy" "$tmp/cpu.npy" --tolerance 1e-4 | awk 'NR > 1 { if ($4 > m) m = $4 } END { printf "%.1e", m }')
+  awk -v s="$scene" -v m="$method" -v c="$cpu" -v g="$gpu" -v n="$march" -v d="$diff" \
+    'BEGIN { printf "| %s | %s | %.1f | %.1f | %.2f | %s | %s |\n", s, m, 1000 * c, 1000 * g, c / g,
+             n < 0 ? "—" : sprintf("%.1f", 1000 * n), d }'
 done
 echo
 echo "| table (bonsai's transfer function) | CPU s (2 threads) | Vulkan s ($label) | CPU / Vulkan | max difference |"

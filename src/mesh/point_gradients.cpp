@@ -2,16 +2,11 @@
 
 namespace vri {
 
-namespace {
-
-// The gradients of the barycentric coordinates of vertices 1, 2 and 3 of a
-// tetrahedron with edges e1, e2, e3 from vertex 0 (det = e1 . (e2 x e3)).
+// det = e1 . (e2 x e3)
 std::array<Vec3, 3> barycentric_gradients(Vec3 e1, Vec3 e2, Vec3 e3) {
   const double inv = 1 / dot(e1, cross(e2, e3));
   return {cross(e2, e3) * inv, cross(e3, e1) * inv, cross(e1, e2) * inv};
 }
-
-}  // namespace
 
 Vec3 tet_gradient(const TetMesh& mesh, std::size_t tet, const std::array<double, 4>& v) {
   const auto& p = mesh.points();

@@ -17,6 +17,7 @@
 
 #include "gpu_against_cpu.hpp"
 #include "gpu_array.hpp"
+#include "mesh/mesh_test_support.hpp"
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
 #include "vri/render/backend.hpp"
@@ -110,6 +111,21 @@ TEST(SplitArrays, LitScenesMatchTheCpu) {
     EXPECT_LE(test::gpu_against_cpu(with(scene, "preint2-dual", 12, 48, 40)).max, 1e-4) << mode;
   }
   expect_guaranteed_within_tolerance(with(scene, "adaptive", 0, 48, 40));
+  EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
+}
+
+// tet-raycast's (l, s_f, s_b) table of 64 lengths of 32^2 (1 MiB: four
+// parts) on a small mesh (its tetrahedra in one buffer: 96 bytes each).
+TEST(SplitArrays, MeshTablesMatchTheCpu) {
+  Scene scene{test::carved_mesh(7, [](double x, double y, double z) { return 0.1 * x + 0.08 * y - 0.05 * z + 0.4; },
+                                [](double x, double y, double) { return !(x > 2 && x < 4 && y > 2 && y < 4); }),
+              TransferFunction({{0, 0, 0, 1, 0}, {0.3, 0, 1, 0, 0.2}, {0.6, 1, 1, 0, 1.2}, {1, 1, 0, 0, 0.4}}),
+              {}, {}, {0, 0, 0}, {}};
+  scene.camera.eye = {14, -9, 11};
+  scene.camera.target = {3, 3, 3};
+  scene = with(scene, "tet-raycast", 32, 48, 40);
+  scene.method.length_samples = 64;
+  EXPECT_LE(test::gpu_against_cpu(scene).max, 1e-4);
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }
 

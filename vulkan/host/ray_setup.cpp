@@ -146,4 +146,24 @@ std::vector<float> slab_rays(int steps, const Camera& camera, const GridVolume& 
   return out;
 }
 
+std::vector<float> mesh_rays(const Camera& camera, const TetMesh& mesh, Vec3 centre, int threads) {
+  const int W = camera.width(), H = camera.height();
+  std::vector<float> out(static_cast<std::size_t>(W) * H * kMeshRayFloats, 0.0f);
+  const Vec3 pad = (mesh.box_hi() - mesh.box_lo()) * 1e-3;
+  for_rows(H, threads, [&](int y) {
+    for (int x = 0; x < W; ++x) {
+      float* r = out.data() + (static_cast<std::size_t>(y) * W + x) * kMeshRayFloats;
+      const Ray ray = camera.ray(x, y);
+      const auto iv = clip_to_box(ray, mesh.box_lo() - pad, mesh.box_hi() + pad);
+      r[6] = -1;
+      if (!iv) continue;
+      const Vec3 o = ray.at(std::max(iv->t0, 0.0)) - centre;
+      for (int a = 0; a < 3; ++a) r[a] = static_cast<float>(o[a]);
+      put_direction(r + 3, ray);
+      r[6] = 1;
+    }
+  });
+  return out;
+}
+
 }  // namespace vri::vulkan

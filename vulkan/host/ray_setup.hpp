@@ -10,6 +10,7 @@
 
 #include "vri/camera/camera.hpp"
 #include "integrators/float_march.hpp"  // FloatLighting, last_slabs
+#include "vri/mesh/tet_mesh.hpp"
 #include "vri/tables/discrete_tf.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -43,5 +44,14 @@ constexpr int slab_ray_floats(int steps) { return 16 + 4 * steps; }
 
 std::vector<float> slab_rays(int steps, const Camera& camera, const GridVolume& volume, const DiscreteTf& tf,
                              const detail::FloatLighting& lighting, double h, int threads);
+
+// A ray through a tetrahedral mesh, 7 floats (tet_raycast.comp): the
+// origin less `centre` (where the ray enters the mesh's box, widened by
+// 1e-3 of its diagonal, or the eye when inside it), the unit direction, and
+// 1 (-1: the ray misses the box). Distances along it are the CPU's from
+// that origin on.
+inline constexpr int kMeshRayFloats = 7;
+
+std::vector<float> mesh_rays(const Camera& camera, const TetMesh& mesh, Vec3 centre, int threads);
 
 }  // namespace vri::vulkan

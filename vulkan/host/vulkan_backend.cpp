@@ -14,6 +14,7 @@
 #include "vulkan_preint.hpp"
 #include "vulkan_preint2_dual.hpp"
 #include "vulkan_riemann.hpp"
+#include "vulkan_tet_raycast.hpp"
 #include "vulkan_table_builders.hpp"
 
 namespace vri {
@@ -22,13 +23,20 @@ bool vulkan_backend_built() { return true; }
 
 std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene) {
   const std::string& m = scene.method.name;
-  if (!std::holds_alternative<GridVolume>(scene.volume))
-    throw Error("--backend vulkan: tetrahedral meshes are not on the GPU yet (docs/GPU.md); use --backend cpu");
-  if (m != "riemann" && m != "preint1" && m != "preint2" && m != "preint2-dual" && m != "adaptive")
+  if (std::holds_alternative<GridVolume>(scene.volume) && m != "riemann" && m != "preint1" && m != "preint2" &&
+      m != "preint2-dual" && m != "adaptive")
     throw Error("--backend vulkan: method '" + m +
                 "' is not on the GPU yet; riemann, preint1, preint2, preint2-dual and adaptive are (docs/GPU.md)");
   if (!scene.method.fast.float_math)
     throw Error("--backend vulkan: the GPU computes in float; --double needs --backend cpu");
+  if (!std::holds_alternative<GridVolume>(scene.volume)) {
+    if (m != "tet-raycast")
+      throw Error("--backend vulkan: method '" + m + "' on tetrahedral meshes is not on the GPU yet; tet-raycast is "
+                  "(docs/GPU.md)");
+    if (scene.method.fast.termination != 0)  // as make_integrator on the CPU
+      throw Error("tet-raycast: early ray termination is not supported on tetrahedral meshes yet");
+    return std::make_unique<vulkan::VulkanTetRaycast>(vulkan::VulkanDevice::shared(), scene);
+  }
   if (m == "riemann") return std::make_unique<vulkan::VulkanRiemann>(vulkan::VulkanDevice::shared(), scene);
   if (m == "adaptive" && parse_adaptive_strategy(scene.method.strategy) == AdaptiveStrategy::Guaranteed)
     return std::make_unique<vulkan::VulkanGuaranteedAdaptive>(vulkan::VulkanDevice::shared(), scene);

@@ -69,3 +69,18 @@ float interpolate(Cell c) {
   return trilinear(voxel(o), voxel(o + 1u), voxel(o + y), voxel(o + y + 1u), voxel(o + z), voxel(o + z + 1u),
                    voxel(o + z + y), voxel(o + z + y + 1u), c.f);
 }
+
+// The gradient in a cell, from the host's gradient field (three floats a grid
+// point: SPLIT_INPUT(float, gradients, ...) before this file, read by lit
+// shaders only), trilinear as the CPU float paths' (float_shading.hpp).
+vec3 gradient_at(Cell c) {
+  const uint y = 3u * p.sy, z = 3u * p.sz;
+  vec3 g;
+  for (int a = 0; a < 3; ++a) {
+    const uint i = 3u * c.offset + uint(a);
+    g[a] = trilinear(gradients_at(i), gradients_at(i + 3u), gradients_at(i + y), gradients_at(i + y + 3u),
+                     gradients_at(i + z), gradients_at(i + z + 3u), gradients_at(i + z + y), gradients_at(i + z + y + 3u),
+                     c.f);
+  }
+  return g;
+}

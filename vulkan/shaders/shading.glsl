@@ -1,26 +1,13 @@
 // SPEC §5 shading as the CPU float paths compute it
-// (src/integrators/float_shading.hpp): the gradient interpolated
-// trilinearly from the host's gradient field in the sample's cell, and
-// c_lit = c a + b with a = ka + kd x, b = ks x^p, x = |N . d|; x^p as
-// exp(p ln x) by the CPU's own polynomials (float_math.hpp). Needs before
-// it: SPLIT_INPUT(float, gradients, ...) (three floats a grid point),
-// exp_neg.glsl, and in `p`: ka, kd, ks, shininess, flat_threshold.
+// (src/integrators/float_shading.hpp): c_lit = c a + b with a = ka + kd x,
+// b = ks x^p, x = |N . d|; x^p as exp(p ln x) by the CPU's own polynomials
+// (float_math.hpp). The gradient comes from the caller (grids:
+// grid_sampler.glsl's gradient_at). Needs before it: exp_neg.glsl, and in
+// `p`: ka, kd, ks, shininess, flat_threshold.
 
 struct Terms {
   float a, b;
 };
-
-vec3 gradient_at(Cell c) {
-  const uint y = 3u * p.sy, z = 3u * p.sz;
-  vec3 g;
-  for (int a = 0; a < 3; ++a) {
-    const uint i = 3u * c.offset + uint(a);
-    g[a] = trilinear(gradients_at(i), gradients_at(i + 3u), gradients_at(i + y), gradients_at(i + y + 3u),
-                     gradients_at(i + z), gradients_at(i + z + 3u), gradients_at(i + z + y), gradients_at(i + z + y + 3u),
-                     c.f);
-  }
-  return g;
-}
 
 // ln x for normal floats x (Cephes' logf, as log_pos on the CPU).
 float log_pos(float x) {

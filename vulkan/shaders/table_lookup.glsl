@@ -28,8 +28,10 @@ vec4 along(int which, uint e, float w) {
   return v;
 }
 
-vec4 blend(int which, Place f, Place b) {
-  const uint n = uint(p.table_n), e = uint(f.i) * n + uint(b.i);
+// The first-order table whose first entry is entry `base` of `which`
+// (tet-raycast's tables of several lengths, one after another).
+vec4 blend_at(int which, uint base, Place f, Place b) {
+  const uint n = uint(p.table_n), e = base + uint(f.i) * n + uint(b.i);
   const vec4 front = along(which, e, b.w), back = along(which, e + n, b.w);
   precise vec4 v = front + f.w * (back - front);
   return v;
@@ -48,4 +50,5 @@ vec4 blend_at(int which, uint base, Place f, Place m, Place b) {
   return v;
 }
 
+vec4 blend(int which, Place f, Place b) { return blend_at(which, 0u, f, b); }
 vec4 blend(int which, Place f, Place m, Place b) { return blend_at(which, 0u, f, m, b); }

@@ -28,7 +28,8 @@ class BoundaryBvh {
 
   std::size_t face_count() const { return faces_.size(); }
 
- private:
+  // The tree as it is, for a device that walks it itself (the Vulkan
+  // tet-raycast: vulkan/host/gpu_tet_mesh.hpp); node 0 is the root.
   struct Face {
     Vec3 a, e1, e2;  // a, b - a, c - a with (b-a) x (c-a) pointing out of the mesh
     std::int32_t slot;
@@ -37,6 +38,10 @@ class BoundaryBvh {
     Vec3 lo, hi;
     std::int32_t first, count;  // leaf: faces_[first, first+count); inner: count = 0, children first, first+1
   };
+  const std::vector<Face>& faces() const { return faces_; }
+  const std::vector<Node>& nodes() const { return nodes_; }
+
+ private:
   std::vector<Face> faces_;
   std::vector<Node> nodes_;
   void build(std::int32_t node, std::int32_t first, std::int32_t count);

@@ -17,6 +17,10 @@ namespace vri {
 // values v at its four vertices (in the order of mesh.tets()[tet]).
 Vec3 tet_gradient(const TetMesh& mesh, std::size_t tet, const std::array<double, 4>& v);
 
+// The gradients of the barycentric coordinates of vertices 1, 2 and 3 of a
+// tetrahedron with edges e1, e2, e3 from vertex 0.
+std::array<Vec3, 3> barycentric_gradients(Vec3 e1, Vec3 e2, Vec3 e3);
+
 class PointGradients {
  public:
   // Keeps a reference to mesh. A point in no tetrahedron gets gradient 0.

@@ -74,7 +74,8 @@ class TetWalk {
     return std::clamp(dot(f.gradient, p) + f.offset, f.lo, f.hi);
   }
 
- private:
+  // What the walk precomputes, for a device that walks on its own (the
+  // Vulkan tet-raycast: vulkan/host/gpu_tet_mesh.hpp).
   struct Plane {
     Vec3 normal;  // outward, not normalised
     double offset;  // normal . x = offset on the face
@@ -83,6 +84,11 @@ class TetWalk {
     Vec3 gradient;
     double offset, lo, hi;
   };
+  const Plane& plane(std::int32_t tet, int face) const { return planes_[4 * std::size_t(tet) + face]; }
+  const Linear& field(std::int32_t tet) const { return fields_[tet]; }
+  const BoundaryBvh& bvh() const { return bvh_; }
+
+ private:
   // Where the ray leaves `tet` (having entered through entry_face, or -1):
   // the nearest crossing of an outward-facing face plane, and that face.
   std::pair<double, int> exit_of(std::int32_t tet, int entry_face, const Ray& ray) const;
