@@ -54,8 +54,7 @@ GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& vol
     : volume_(volume),
       tolerance_(params.tolerance),
       zero_(tf),
-      margin_(1e-5 * (double(volume.max_value()) - volume.min_value() +
-                      std::max(std::abs(double(volume.min_value())), std::abs(double(volume.max_value()))))),
+      margin_(interpolation_margin(volume)),
       zero_bins_(zero_, volume.min_value() - margin_, volume.max_value() + margin_),
       skipping_(volume, zero_, FastPath{}, "adaptive") {
   params.validate();

@@ -8,11 +8,14 @@
 
 namespace vri {
 
+double interpolation_margin(const GridVolume& v) {
+  const double largest = std::max(std::abs(double(v.min_value())), std::abs(double(v.max_value())));
+  return 1e-5 * (double(v.max_value()) - v.min_value() + largest);
+}
+
 EmptySpace::EmptySpace(const MacroCells& cells, const ZeroOpacity& zero)
     : cells_(cells), empty_(cells.count(), 0) {
-  const GridVolume& v = cells.volume();
-  const double largest = std::max(std::abs(double(v.min_value())), std::abs(double(v.max_value())));
-  const double margin = 1e-5 * (double(v.max_value()) - v.min_value() + largest);
+  const double margin = interpolation_margin(cells.volume());
   for (std::size_t i = 0; i < empty_.size(); ++i)
     empty_[i] = zero.over(cells.min(i) - margin, cells.max(i) + margin) ? 1 : 0;
 }

@@ -1,7 +1,5 @@
 #include "vulkan_adaptive_guaranteed.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,6 +11,7 @@
 #include "vri/integrators/fast_path.hpp"
 #include "vri/tables/zero_opacity.hpp"
 #include "vri/transfer/float_transfer_function.hpp"
+#include "vri/volume/empty_space.hpp"
 
 namespace vri::vulkan {
 
@@ -59,8 +58,7 @@ VulkanGuaranteedAdaptive::VulkanGuaranteedAdaptive(std::shared_ptr<const VulkanD
     throw Error("--backend vulkan: adaptive 'guaranteed' computes in float on the GPU; its tolerance must be at "
                 "least 1e-4, got " + std::to_string(params.tolerance));
   const GridVolume& volume = scene.grid();
-  const double lo = volume.min_value(), hi = volume.max_value();
-  margin_ = static_cast<float>(1e-5 * (hi - lo + std::max(std::abs(lo), std::abs(hi))));
+  margin_ = static_cast<float>(interpolation_margin(volume));
   if (scene.lighting.enabled) {
     shader_.emplace(scene.lighting, volume);
     shading_.emplace(device_, scene.lighting, *shader_, volume);

@@ -28,6 +28,11 @@
 
 namespace vri {
 
+// How far an interpolated scalar of `volume` may round beyond its corners'
+// range: ranges are widened by it before they are classified (1e-5 of the
+// volume's range plus its largest magnitude).
+double interpolation_margin(const GridVolume& volume);
+
 class EmptySpace {
  public:
   EmptySpace(const MacroCells& cells, const ZeroOpacity& zero);
