@@ -16,8 +16,9 @@
 //    step is accepted when the colour error <= 0.45 tol h / L and the
 //    optical depth's times T <= that over the brightest lit colour (L: the
 //    ray's length in the volume); the ray stops at T < 0.1 tol / brightest;
-//  - a cell whose macro cell is empty, or whose corners' range (with the
-//    macro cells' margin) holds only transparent segments, is passed over.
+//  - the walk leaps over the rest of an empty macro cell, and a cell whose
+//    corners' range (with the macro cells' margin) holds only transparent
+//    segments is passed over.
 // The error estimates carry float roundings, so a step the CPU accepts the
 // GPU may halve or the reverse; each image meets the tolerance against
 // `exact` (docs/GPU.md).
@@ -270,7 +271,10 @@ void main() {
     if (!df_less(ta, tb)) continue;
     Cell cell;
     cell.index = piece_cell(ta, tb);
-    if (macro_empty(cell)) continue;
+    if (macro_empty(cell)) {
+      walk_leap(w, cell.index, t_end);
+      continue;
+    }
     const uint o = uint(cell.index.x) + p.sy * uint(cell.index.y) + p.sz * uint(cell.index.z);
     const uint offsets[8] = uint[8](0u, 1u, p.sy, p.sy + 1u, p.sz, p.sz + 1u, p.sz + p.sy, p.sz + p.sy + 1u);
     float v[8];

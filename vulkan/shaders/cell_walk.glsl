@@ -7,8 +7,9 @@
 //   CellWalk w = walk_start();
 //   while (df_less(w.ta, t_end)) { DF ta = w.ta, tb = walk_next(w, t_end); ...; w.ta = tb; }
 // A piece may be empty (ta == tb where two faces are crossed at once).
+// walk_leap passes over the rest of an empty macro cell.
 // Needs before it: double_float.glsl, DF u0[3], du[3] (the grid position at
-// the entry and per world unit) and in `p`: last_cell.
+// the entry and per world unit), empty_space.glsl and in `p`: last_cell, top.
 
 struct CellWalk {
   int dir[3];       // -1, 0, 1: the ray's direction per axis
@@ -59,4 +60,26 @@ vec3 local_in(ivec3 index, DF t) {
   vec3 f;
   for (int a = 0; a < 3; ++a) f[a] = df_float(df_sub(position(a, t), DF(float(index[a]), 0.0)));
   return f;
+}
+
+// Passes over the rest of the macro cell of `cell` (empty: it adds nothing),
+// the current piece's back at w.ta: the walk goes on from where the ray
+// leaves the macro cell, with the faces it meets there. A crossing depends
+// only on its plane's index, so the pieces after the leap are a full walk's.
+void walk_leap(inout CellWalk w, ivec3 cell, DF t_end) {
+  const ivec3 m = cell / kMacroCells;
+  DF t_x = t_end;
+  for (int a = 0; a < 3; ++a) {
+    if (w.dir[a] == 0) continue;
+    const float face = w.dir[a] > 0 ? min(float((m[a] + 1) * kMacroCells), p.top[a]) : float(m[a] * kMacroCells);
+    t_x = df_min(t_x, crossing(a, face));
+  }
+  if (!df_less(w.ta, t_x)) return;
+  w.ta = t_x;
+  for (int a = 0; a < 3; ++a) {
+    if (w.dir[a] == 0) continue;
+    const DF u = position(a, t_x);
+    w.plane[a] = w.dir[a] > 0 ? df_floor(u) + 1.0 : -df_floor(df_neg(u)) - 1.0;
+    w.t_next[a] = crossing(a, w.plane[a]);
+  }
 }

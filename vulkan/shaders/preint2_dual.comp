@@ -12,7 +12,8 @@
 // so the pieces are the CPU's up to roundings. Lit as preint2 (p.lit: 1 sampled, 2
 // interpolated with the middle and back weighted tables). A piece whose
 // cell's macro cell is empty (classified for second-order entries) adds
-// exactly nothing and is not sampled (p.skip).
+// exactly nothing: the walk leaps to where the ray leaves that macro cell
+// (p.skip).
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 
@@ -87,6 +88,7 @@ void main() {
   while (t_end.hi > 0.0 && df_less(w.ta, t_end)) {
     if (T < p.termination) break;
     const DF ta = w.ta, tb = walk_next(w, t_end);
+    w.ta = tb;
     if (df_less(ta, tb)) {
       const DF tm = df_mul(df_add(ta, tb), DF(0.5, 0.0));
       const DF t3[3] = DF[3](ta, tm, tb);
@@ -130,9 +132,10 @@ void main() {
         }
         C += T * v.rgb;
         T *= 1.0 - v.a;
+      } else {
+        walk_leap(w, index, t_end);
       }
     }
-    w.ta = tb;
   }
   image.px[pixel] = vec4(C, 1.0 - T);
 }
