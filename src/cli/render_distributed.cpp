@@ -93,8 +93,12 @@ int run_render_distributed(const DistributedJob& job) {
               << " s, composited in " << result.composite_seconds << " s; largest brick " << largest
               << " bytes, largest peak memory of a rank " << largest_rss << " bytes -> " << job.output << "\n";
     return 0;
-  } catch (const distributed::MpiWorld::JobFailed&) {
-    if (world.rank() == 0) throw;  // one line, from rank 0, naming the rank that failed
+  } catch (const distributed::MpiWorld::JobFailed& e) {
+    // One line, from rank 0, naming the rank that failed; the others wait
+    // until it is out: mpirun ends the job at the first non-zero exit, which
+    // could otherwise come before rank 0 has written it.
+    if (world.rank() == 0) std::cerr << "vri: error: " << e.what() << std::endl;
+    MPI_Barrier(world.comm());
     return 1;
   }
 }
