@@ -1,0 +1,421 @@
+#pragma once
+// The 8-lane primitives of the AVX2 packet marches (float_packet.cpp for
+// preint1 and preint2, float_packet_riemann.cpp for riemann): the lanes'
+// ray state, sampling, table lookups, exp and log, shading - each the
+// scalar float path's operations in the same order, so a packet's pixels
+// are the scalar march's bytes. Included only where simd.hpp allows AVX2
+// packets (VRI_HAVE_AVX2_PACKETS).
+#include <immintrin.h>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include "float_march.hpp"
+#include "float_packet.hpp"
+#include "float_riemann.hpp"
+
+namespace vri::detail::lanes8 {
+
+// What every march keeps per ray, a lane each: its sample positions u0 + k du
+// in grid units, its clipped interval and what it composited so far.
+struct RayLanes {
+  alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0
+  alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
+  alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];
+  alignas(32) float d[3][kPacket];  // the direction, for lighting
+  Interval iv[kPacket];
+};
+
+// Clips the rays to the volume and starts the lanes that hit it (steps of h
+// from the entry, T = 1); a ray that misses gets a transparent pixel. Returns
+// the mask of the lanes started.
+inline unsigned enter(RayLanes& L, const GridVolume& volume, const FloatSampler& sampler, const Ray* rays, double h,
+               Rgba* out) {
+  unsigned active = 0;
+  for (int l = 0; l < kPacket; ++l) {
+    const auto iv = volume.clip(rays[l]);  // a brick's: the whole ray's interval and its owned window
+    if (!iv) {
+      out[l] = {0, 0, 0, 0};
+      continue;
+    }
+    L.iv[l] = *iv;
+    const Vec3 u0 = sampler.grid(rays[l].at(iv->t0)), du = sampler.grid_step(rays[l].dir * h);
+    L.ux[l] = u0.x, L.uy[l] = u0.y, L.uz[l] = u0.z, L.dx[l] = du.x, L.dy[l] = du.y, L.dz[l] = du.z;
+    L.T[l] = 1;
+    L.d[0][l] = static_cast<float>(rays[l].dir.x), L.d[1][l] = static_cast<float>(rays[l].dir.y);
+    L.d[2][l] = static_cast<float>(rays[l].dir.z);
+    active |= 1u << l;
+  }
+  return active;
+}
+
+// Each ray's state, a lane each: what march_float keeps in locals, for slabs
+// of Steps steps (1: preint1, 2: preint2).
+template <int Steps>
+struct Lanes : RayLanes {
+  alignas(32) int k[kPacket], stop[kPacket], full[kPacket];
+  bool partial[kPacket];  // the lane owns the partial last slab (march_float)
+  // The slab's samples, front to back: scalar, entry and weight on the table axis.
+  alignas(32) float s[Steps + 1][kPacket];
+  alignas(32) int i[Steps + 1][kPacket];
+  alignas(32) float w[Steps + 1][kPacket];
+  alignas(32) float grad[Steps + 1][3][kPacket];  // `sampled`: the samples' gradients
+  alignas(32) float ta[Steps + 1][kPacket], tb[Steps + 1][kPacket];  // `interpolated`: their shading terms
+  alignas(32) int entry[kPacket];  // the slab's spot (find): its first entry's offset
+  double t_check[kPacket];
+};
+
+#define VRI_AVX2 __attribute__((target("avx2"), always_inline)) inline
+
+// One axis of FloatSampler::at for the 8 lanes' samples k: the cell
+// min(trunc(clamp(u0 + k du, 0, top)), last) and the float fraction in it,
+// with the same double operations as the scalar code.
+VRI_AVX2 void cell_axis(const double* u0, const double* du, __m256i k, double top, int last, __m256i& cell,
+                        __m256& fraction) {
+  const __m256d zero = _mm256_setzero_pd(), hi = _mm256_set1_pd(top);
+  __m128i c[2];
+  __m128 f[2];
+  for (int half = 0; half < 2; ++half) {
+    const __m256d kd = _mm256_cvtepi32_pd(half ? _mm256_extracti128_si256(k, 1) : _mm256_castsi256_si128(k));
+    __m256d x = _mm256_add_pd(_mm256_load_pd(u0 + 4 * half), _mm256_mul_pd(kd, _mm256_load_pd(du + 4 * half)));
+    x = _mm256_min_pd(hi, _mm256_max_pd(zero, x));  // std::clamp: x < 0 ? 0 : top < x ? top : x
+    c[half] = _mm_min_epi32(_mm256_cvttpd_epi32(x), _mm_set1_epi32(last));
+    f[half] = _mm256_cvtpd_ps(_mm256_sub_pd(x, _mm256_cvtepi32_pd(c[half])));
+  }
+  cell = _mm256_set_m128i(c[1], c[0]);
+  fraction = _mm256_set_m128(f[1], f[0]);
+}
+
+VRI_AVX2 __m256 lerp(__m256 a, __m256 b, __m256 f) { return _mm256_add_ps(a, _mm256_mul_ps(f, _mm256_sub_ps(b, a))); }
+
+// base[index] and base[index + 1] of the 8 lanes, interpolated at f: each
+// pair of neighbouring floats read as one 8-byte element (two 4-element
+// gathers instead of two 8-element ones), then split into the two vectors.
+VRI_AVX2 __m256 load(const float* p) { return _mm256_load_ps(p); }
+VRI_AVX2 __m256i load(const int* p) { return _mm256_load_si256(reinterpret_cast<const __m256i*>(p)); }
+VRI_AVX2 void store(float* p, __m256 v) { _mm256_store_ps(p, v); }
+VRI_AVX2 void store(int* p, __m256i v) { _mm256_store_si256(reinterpret_cast<__m256i*>(p), v); }
+VRI_AVX2 unsigned mask(__m256i m) { return static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(m))); }
+
+// The 4-float table entries data + entry[l] + add of the 8 lanes, as 4
+// vectors (r, g, b, alpha) of 8 lanes: lanes l and l + 4 loaded into one
+// register, then transposed 4 by 4 in each half.
+VRI_AVX2 void corner(const float* data, const int* entry, int add, __m256 channel[4]) {
+  __m256 q[4];
+  for (int l = 0; l < 4; ++l) q[l] = _mm256_loadu2_m128(data + entry[l + 4] + add, data + entry[l] + add);
+  const __m256 t0 = _mm256_unpacklo_ps(q[0], q[1]), t1 = _mm256_unpackhi_ps(q[0], q[1]);
+  const __m256 t2 = _mm256_unpacklo_ps(q[2], q[3]), t3 = _mm256_unpackhi_ps(q[2], q[3]);
+  channel[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+  channel[1] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+  channel[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+  channel[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+}
+
+// Lanes 0 1 4 5 2 3 6 7 (what shuffle_ps leaves) back in order.
+VRI_AVX2 __m256 order(__m256 v) {
+  return _mm256_castpd_ps(_mm256_permute4x64_pd(_mm256_castps_pd(v), _MM_SHUFFLE(3, 1, 2, 0)));
+}
+
+// Two lanes' pairs (base[i], base[i + 1]) as one 128-bit register. The pairs
+// are only 4-byte aligned: read through memcpy (the same movsd/movhpd, without
+// the misaligned double access UBSan rightly reports).
+VRI_AVX2 __m128d pairs(const float* base, int i, int j) {
+  double lo, hi;
+  std::memcpy(&lo, base + i, sizeof lo);
+  std::memcpy(&hi, base + j, sizeof hi);
+  return _mm_set_pd(hi, lo);
+}
+
+// The pair (base[i], base[i + 1]) of 1- or 2-byte samples as one integer,
+// base[i] in its low bits (x86 is little-endian); memcpy for the same reason.
+template <class Pair, class T>
+VRI_AVX2 Pair pair(const T* base, int i) {
+  static_assert(sizeof(Pair) == 2 * sizeof(T));
+  Pair p;
+  std::memcpy(&p, base + i, sizeof p);
+  return p;
+}
+
+VRI_AVX2 __m256 lerp_pair(const float* base, const int* index, __m256 f) {
+  const __m256 lo = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[2], index[3]), pairs(base, index[0], index[1])));
+  const __m256 hi = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[6], index[7]), pairs(base, index[4], index[5])));
+  return lerp(order(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0))),
+              order(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(3, 1, 3, 1))), f);
+}
+
+// The same for 1- and 2-byte samples: each lane's pair in one 32-bit lane,
+// split into base[i] and base[i + 1] and converted to float (exactly, as the
+// scalar path converts them).
+VRI_AVX2 __m256 lerp_pair(const std::uint8_t* base, const int* index, __m256 f) {
+  const __m256i p = _mm256_cvtepu16_epi32(_mm_setr_epi16(
+      static_cast<short>(pair<std::uint16_t>(base, index[0])), static_cast<short>(pair<std::uint16_t>(base, index[1])),
+      static_cast<short>(pair<std::uint16_t>(base, index[2])), static_cast<short>(pair<std::uint16_t>(base, index[3])),
+      static_cast<short>(pair<std::uint16_t>(base, index[4])), static_cast<short>(pair<std::uint16_t>(base, index[5])),
+      static_cast<short>(pair<std::uint16_t>(base, index[6])), static_cast<short>(pair<std::uint16_t>(base, index[7]))));
+  return lerp(_mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xff))),
+              _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 8)), f);
+}
+
+template <class T>
+VRI_AVX2 __m256i pairs16(const T* base, const int* index) {
+  return _mm256_setr_epi32(
+      static_cast<int>(pair<std::uint32_t>(base, index[0])), static_cast<int>(pair<std::uint32_t>(base, index[1])),
+      static_cast<int>(pair<std::uint32_t>(base, index[2])), static_cast<int>(pair<std::uint32_t>(base, index[3])),
+      static_cast<int>(pair<std::uint32_t>(base, index[4])), static_cast<int>(pair<std::uint32_t>(base, index[5])),
+      static_cast<int>(pair<std::uint32_t>(base, index[6])), static_cast<int>(pair<std::uint32_t>(base, index[7])));
+}
+
+VRI_AVX2 __m256 lerp_pair(const std::uint16_t* base, const int* index, __m256 f) {
+  const __m256i p = pairs16(base, index);
+  return lerp(_mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xffff))),
+              _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 16)), f);
+}
+
+VRI_AVX2 __m256 lerp_pair(const std::int16_t* base, const int* index, __m256 f) {
+  const __m256i p = pairs16(base, index);  // sign-extended by the arithmetic shifts
+  return lerp(_mm256_cvtepi32_ps(_mm256_srai_epi32(_mm256_slli_epi32(p, 16), 16)),
+              _mm256_cvtepi32_ps(_mm256_srai_epi32(p, 16)), f);
+}
+
+// FloatSampler::cell of the 8 lanes' samples k: each lane's first corner
+// and the fractions.
+struct Cells8 {
+  __m256i index;
+  __m256 fx, fy, fz;
+};
+template <class Lanes>
+VRI_AVX2 Cells8 cells8(const FloatSampler& sampler, const Lanes& L, __m256i k) {
+  __m256i cx, cy, cz;
+  Cells8 c;
+  cell_axis(L.ux, L.dx, k, sampler.top(0), sampler.last_cell(0), cx, c.fx);
+  cell_axis(L.uy, L.dy, k, sampler.top(1), sampler.last_cell(1), cy, c.fy);
+  cell_axis(L.uz, L.dz, k, sampler.top(2), sampler.last_cell(2), cz, c.fz);
+  const int sy = static_cast<int>(sampler.stride_y()), sz = static_cast<int>(sampler.stride_z());
+  c.index = _mm256_add_epi32(cx, _mm256_add_epi32(_mm256_mullo_epi32(cy, _mm256_set1_epi32(sy)),
+                                                  _mm256_mullo_epi32(cz, _mm256_set1_epi32(sz))));
+  return c;
+}
+
+// FloatSampler::at of the 8 lanes' samples k.
+template <class Lanes, class T>
+VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const T* v, const Lanes& L, __m256i k, Cells8* cells = nullptr) {
+  const Cells8 c = cells8(sampler, L, k);
+  if (cells) *cells = c;
+  const std::size_t sy = sampler.stride_y(), sz = sampler.stride_z();
+  alignas(32) int at[kPacket];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(at), c.index);
+  const __m256 c00 = lerp_pair(v, at, c.fx), c10 = lerp_pair(v + sy, at, c.fx);
+  const __m256 c01 = lerp_pair(v + sz, at, c.fx), c11 = lerp_pair(v + sz + sy, at, c.fx);
+  return lerp(lerp(c00, c10, c.fy), lerp(c01, c11, c.fy), c.fz);
+}
+
+// FloatAxis::place of 8 scalars: entry i and weight w on the table axis.
+struct TableAxis8 {
+  __m256 lo, scale, top;
+  __m256i last;
+};
+VRI_AVX2 TableAxis8 axis8(const FloatAxis& a) {
+  return {_mm256_set1_ps(a.lo()), _mm256_set1_ps(a.scale()), _mm256_set1_ps(a.top()), _mm256_set1_epi32(a.size() - 2)};
+}
+VRI_AVX2 void place8(const TableAxis8& axis, __m256 s, __m256i& i, __m256& w) {
+  const __m256 u = _mm256_min_ps(axis.top, _mm256_max_ps(_mm256_setzero_ps(),
+                                                         _mm256_mul_ps(_mm256_sub_ps(s, axis.lo), axis.scale)));
+  i = _mm256_min_epi32(_mm256_cvttps_epi32(u), axis.last);
+  w = _mm256_sub_ps(u, _mm256_cvtepi32_ps(i));
+}
+
+// All ones in the lanes whose bit is set.
+VRI_AVX2 __m256 lane_mask(unsigned bits) {
+  const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+  return _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(static_cast<int>(bits)), bit), bit));
+}
+VRI_AVX2 __m256i blend(__m256i a, __m256i b, __m256 m) {
+  return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), m));
+}
+
+// The slab's spot from its samples' entries on the table axis (find): the
+// offset of entry (i_0, ..., i_Steps) in floats.
+template <int Steps>
+VRI_AVX2 __m256i spot8(const __m256i (&i)[Steps + 1], __m256i n) {
+  __m256i e = i[0];
+  for (int j = 1; j <= Steps; ++j) e = _mm256_add_epi32(_mm256_mullo_epi32(e, n), i[j]);
+  return _mm256_slli_epi32(e, 2);
+}
+
+// The slab lookups of the 8 lanes in the table `data` of the lookup's layout
+// (FloatLookup::blend, SecondOrderFloatLookup::blend with lanes as vectors,
+// the same operations in the same order).
+VRI_AVX2 void blend8(const FloatLookup& table, const float* data, const Lanes<1>& L, __m256 v[4]) {
+  const int row = 4 * table.size();
+  __m256 e00[4], e01[4], e10[4], e11[4];
+  corner(data, L.entry, 0, e00);
+  corner(data, L.entry, 4, e01);
+  corner(data, L.entry, row, e10);
+  corner(data, L.entry, row + 4, e11);
+  const __m256 wf = load(L.w[0]), wb = load(L.w[1]);
+  for (int c = 0; c < 4; ++c) v[c] = lerp(lerp(e00[c], e01[c], wb), lerp(e10[c], e11[c], wb), wf);
+}
+VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const float* data, const Lanes<2>& L, __m256 v[4]) {
+  const int row = static_cast<int>(table.row()), plane = static_cast<int>(table.plane());
+  const __m256 wf = load(L.w[0]), wm = load(L.w[1]), wb = load(L.w[2]);
+  __m256 c[2][2][4];  // along s_b at (f, m), f and m each 0 or 1
+  for (int f = 0; f < 2; ++f)
+    for (int m = 0; m < 2; ++m) {
+      __m256 lo[4], hi[4];
+      corner(data, L.entry, f * plane + m * row, lo);
+      corner(data, L.entry, f * plane + m * row + 4, hi);
+      for (int ch = 0; ch < 4; ++ch) c[f][m][ch] = lerp(lo[ch], hi[ch], wb);
+    }
+  for (int ch = 0; ch < 4; ++ch) v[ch] = lerp(lerp(c[0][0][ch], c[0][1][ch], wm), lerp(c[1][0][ch], c[1][1][ch], wm), wf);
+}
+
+// exp_neg (float_math.hpp) on 8 lanes, the same operations in the same order.
+VRI_AVX2 __m256 exp_neg8(__m256 x) {
+  using namespace exp_poly;
+  const __m256 y = _mm256_max_ps(_mm256_xor_ps(x, _mm256_set1_ps(-0.0f)), _mm256_set1_ps(kMin));
+  const __m256 n = _mm256_floor_ps(_mm256_add_ps(_mm256_mul_ps(y, _mm256_set1_ps(kLog2e)), _mm256_set1_ps(0.5f)));
+  const __m256 r = _mm256_sub_ps(_mm256_sub_ps(y, _mm256_mul_ps(n, _mm256_set1_ps(kLn2Hi))),
+                                 _mm256_mul_ps(n, _mm256_set1_ps(kLn2Lo)));
+  __m256 p = _mm256_set1_ps(kP[0]);
+  for (int i = 1; i < 6; ++i) p = _mm256_add_ps(_mm256_mul_ps(p, r), _mm256_set1_ps(kP[i]));
+  const __m256 e = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(p, _mm256_mul_ps(r, r)), r), _mm256_set1_ps(1.0f));
+  const __m256i bits = _mm256_slli_epi32(_mm256_add_epi32(_mm256_cvttps_epi32(n), _mm256_set1_epi32(127)), 23);
+  return _mm256_mul_ps(e, _mm256_castsi256_ps(bits));
+}
+
+// log_pos (float_math.hpp) on 8 lanes, the same operations in the same order
+// (max with the bound first, as std::max(x, bound) keeps x when it is NaN).
+VRI_AVX2 __m256 log8(__m256 x) {
+  using namespace log_poly;
+  const __m256i bits = _mm256_castps_si256(_mm256_max_ps(_mm256_set1_ps(kMin), x));
+  __m256 e = _mm256_cvtepi32_ps(_mm256_sub_epi32(_mm256_srli_epi32(bits, 23), _mm256_set1_epi32(126)));
+  __m256 m = _mm256_castsi256_ps(_mm256_or_si256(_mm256_and_si256(bits, _mm256_set1_epi32(static_cast<int>(0x807fffffu))),
+                                                 _mm256_set1_epi32(0x3f000000)));
+  const __m256 one = _mm256_set1_ps(1.0f), low = _mm256_cmp_ps(m, _mm256_set1_ps(kSqrtHalf), _CMP_LT_OQ);
+  e = _mm256_blendv_ps(e, _mm256_sub_ps(e, one), low);
+  m = _mm256_blendv_ps(_mm256_sub_ps(m, one), _mm256_sub_ps(_mm256_add_ps(m, m), one), low);
+  const __m256 z = _mm256_mul_ps(m, m);
+  __m256 y = _mm256_set1_ps(kQ[0]);
+  for (int i = 1; i < 9; ++i) y = _mm256_add_ps(_mm256_mul_ps(y, m), _mm256_set1_ps(kQ[i]));
+  y = _mm256_mul_ps(_mm256_mul_ps(y, m), z);
+  y = _mm256_add_ps(y, _mm256_mul_ps(e, _mm256_set1_ps(exp_poly::kLn2Lo)));
+  y = _mm256_sub_ps(y, _mm256_mul_ps(_mm256_set1_ps(0.5f), z));
+  return _mm256_add_ps(_mm256_add_ps(m, y), _mm256_mul_ps(e, _mm256_set1_ps(exp_poly::kLn2Hi)));
+}
+
+// FloatShading::gradient of the 8 lanes' cells: component a gathered at the
+// 8 corners of each lane's cell (3 floats a grid point), interpolated as
+// FloatSampler::interpolate does.
+VRI_AVX2 void gradient8(const FloatShading& shading, const Cells8& c, __m256 g[3]) {
+  const __m256i first = _mm256_mullo_epi32(c.index, _mm256_set1_epi32(3));
+  const int sy = static_cast<int>(shading.stride_y()), sz = static_cast<int>(shading.stride_z());
+  const int offset[8] = {0, 3, sy, sy + 3, sz, sz + 3, sz + sy, sz + sy + 3};
+  for (int a = 0; a < 3; ++a) {
+    __m256 v[8];
+    for (int corner = 0; corner < 8; ++corner)
+      v[corner] = _mm256_i32gather_ps(shading.data() + a + offset[corner], first, 4);
+    g[a] = lerp(lerp(lerp(v[0], v[1], c.fx), lerp(v[2], v[3], c.fx), c.fy),
+                lerp(lerp(v[4], v[5], c.fx), lerp(v[6], v[7], c.fx), c.fy), c.fz);
+  }
+}
+
+// FloatShading::terms of 8 gradients and directions: (a, b) per lane.
+VRI_AVX2 void terms8(const FloatShading& shading, const __m256 g[3], const __m256 d[3], __m256& a, __m256& b) {
+  const __m256 len = _mm256_sqrt_ps(
+      _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(g[0], g[0]), _mm256_mul_ps(g[1], g[1])), _mm256_mul_ps(g[2], g[2])));
+  const __m256 normal = _mm256_and_ps(_mm256_cmp_ps(len, _mm256_set1_ps(shading.flat()), _CMP_GE_OQ),
+                                      _mm256_cmp_ps(len, _mm256_setzero_ps(), _CMP_NEQ_OQ));
+  const __m256 dot = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(g[0], d[0]), _mm256_mul_ps(g[1], d[1])),
+                                   _mm256_mul_ps(g[2], d[2]));
+  const __m256 sign = _mm256_set1_ps(-0.0f);
+  const __m256 x = _mm256_div_ps(_mm256_andnot_ps(sign, dot), len);
+  const __m256 power = exp_neg8(_mm256_xor_ps(_mm256_mul_ps(_mm256_set1_ps(shading.shininess()), log8(x)), sign));
+  const __m256 flat_a = _mm256_set1_ps(shading.ka() + shading.kd());
+  a = _mm256_blendv_ps(flat_a, _mm256_add_ps(_mm256_set1_ps(shading.ka()), _mm256_mul_ps(_mm256_set1_ps(shading.kd()), x)),
+                       normal);
+  b = _mm256_and_ps(_mm256_mul_ps(_mm256_set1_ps(shading.ks()), power), normal);
+}
+
+// `interpolated` lighting of the 8 lanes' slabs: lit_weighted (first order)
+// and lit_lagrange (second order) of float_march.hpp with lanes as vectors,
+// the same operations in the same order.
+VRI_AVX2 void lit_interpolated8(const FloatLookup& table, const FloatLighting& lighting, const Lanes<1>& L,
+                                __m256 v[4]) {
+  __m256 front[4], back[4];
+  blend8(table, lighting.weighted[0], L, front);
+  blend8(table, lighting.weighted[1], L, back);
+  const __m256 fa = load(L.ta[0]), fb = load(L.tb[0]), ba = load(L.ta[1]), bb = load(L.tb[1]);
+  const __m256 specular =
+      _mm256_add_ps(_mm256_mul_ps(fb, _mm256_sub_ps(front[3], back[3])), _mm256_mul_ps(bb, back[3]));
+  for (int c = 0; c < 3; ++c)
+    v[c] = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(fa, front[c]), _mm256_mul_ps(ba, back[c])), specular);
+  v[3] = front[3];
+}
+VRI_AVX2 void lit_interpolated8(const SecondOrderFloatLookup& table, const FloatLighting& lighting,
+                                const Lanes<2>& L, __m256 v[4]) {
+  __m256 full[4], middle[4], back[4];
+  blend8(table, lighting.weighted[0], L, full);
+  blend8(table, lighting.weighted[1], L, middle);
+  blend8(table, lighting.weighted[2], L, back);
+  const __m256 s_f = _mm256_sub_ps(_mm256_sub_ps(full[3], middle[3]), back[3]);
+  const __m256 specular = _mm256_add_ps(
+      _mm256_add_ps(_mm256_mul_ps(load(L.tb[0]), s_f), _mm256_mul_ps(load(L.tb[1]), middle[3])),
+      _mm256_mul_ps(load(L.tb[2]), back[3]));
+  for (int c = 0; c < 3; ++c) {
+    const __m256 d_f = _mm256_sub_ps(_mm256_sub_ps(full[c], middle[c]), back[c]);
+    v[c] = _mm256_add_ps(_mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(load(L.ta[0]), d_f),
+                                                     _mm256_mul_ps(load(L.ta[1]), middle[c])),
+                                       _mm256_mul_ps(load(L.ta[2]), back[c])),
+                         specular);
+  }
+  v[3] = full[3];
+}
+
+// A lit sample's state: its gradient (`sampled`) or its shading terms
+// (`interpolated`), into the lanes of `m`.
+VRI_AVX2 void lit_sample(const FloatLighting& lighting, const Cells8& cells, const __m256 d[3], __m256 m,
+                         __m256 keep_g[3], __m256& keep_a, __m256& keep_b) {
+  __m256 g[3];
+  gradient8(*lighting.shading, cells, g);
+  if (lighting.interpolated()) {
+    __m256 a, b;
+    terms8(*lighting.shading, g, d, a, b);
+    keep_a = _mm256_blendv_ps(keep_a, a, m);
+    keep_b = _mm256_blendv_ps(keep_b, b, m);
+  } else {
+    for (int c = 0; c < 3; ++c) keep_g[c] = _mm256_blendv_ps(keep_g[c], g[c], m);
+  }
+}
+
+// Slab k of the lanes in `bits` found anew, at a ray's entry or after a
+// leap: its samples k Steps .. (k + 1) Steps and its spot.
+template <int Steps, class T>
+VRI_AVX2 void start_slab(const FloatSampler& sampler, const T* values, const FloatLighting& lighting,
+                         const TableAxis8& axis, int n, Lanes<Steps>& L, unsigned bits) {
+  const __m256 m = lane_mask(bits);
+  const __m256i first = _mm256_mullo_epi32(load(L.k), _mm256_set1_epi32(Steps));
+  __m256i i[Steps + 1];
+  for (int j = 0; j <= Steps; ++j) {
+    Cells8 cells;
+    const __m256 s = sample8(sampler, values, L, _mm256_add_epi32(first, _mm256_set1_epi32(j)), &cells);
+    if (lighting.shading) {
+      __m256 g[3] = {load(L.grad[j][0]), load(L.grad[j][1]), load(L.grad[j][2])}, a = load(L.ta[j]), b = load(L.tb[j]);
+      const __m256 d[3] = {load(L.d[0]), load(L.d[1]), load(L.d[2])};
+      lit_sample(lighting, cells, d, m, g, a, b);
+      for (int c = 0; c < 3; ++c) store(L.grad[j][c], g[c]);
+      store(L.ta[j], a), store(L.tb[j], b);
+    }
+    __m256 w;
+    place8(axis, s, i[j], w);
+    store(L.s[j], _mm256_blendv_ps(load(L.s[j]), s, m));
+    store(L.w[j], _mm256_blendv_ps(load(L.w[j]), w, m));
+    store(L.i[j], blend(load(L.i[j]), i[j], m));
+  }
+  store(L.entry, blend(load(L.entry), spot8<Steps>(i, _mm256_set1_epi32(n)), m));
+}
+
+}  // namespace vri::detail::lanes8
