@@ -20,6 +20,7 @@ inline TfSample lit(TfSample v, double a, double b) {
 
 struct ColourStep {
   double tau[5], depth[5];  // tau at the samples; optical depth from t to each
+  double attenuation;       // e^{-depth[4]}: the step's transmittance
   double S[4], D[4];        // whole and halves, per channel r, g, b, alpha
   double err;               // the largest error(D, S) over the channels
 };
@@ -31,7 +32,10 @@ inline ColourStep colour_step(const TfSample (&f)[5], double T, double h) {
   cumulative(st.tau, h, st.depth);
   double g[4][5];
   for (int k = 0; k < 5; ++k) {
-    const double w = f[k].tau * T * std::exp(-st.depth[k]);
+    // depth[0] is 0 (e^0 = 1 exactly); e^{-depth[4]} is kept for add_step.
+    const double e = k == 0 ? 1.0 : std::exp(-st.depth[k]);
+    if (k == 4) st.attenuation = e;
+    const double w = f[k].tau * T * e;
     g[0][k] = f[k].r * w;
     g[1][k] = f[k].g * w;
     g[2][k] = f[k].b * w;
@@ -55,7 +59,7 @@ inline ColourStep colour_step(const TfSample (&f)[5], double T, double h) {
 // of the samples' (lit) chromaticities times the opacity, never more than the
 // brightest sample times it. On an accurate step the rescaling is ~1.
 inline double add_step(const ColourStep& st, double T, double (&C)[3]) {
-  const double T_after = T * std::exp(-st.depth[4]);
+  const double T_after = T * st.attenuation;
   const double opacity = T - T_after;
   const double boole_opacity = corrected(st.D[3], st.S[3]);
   const double scale = boole_opacity > 0 ? opacity / boole_opacity : 0;
