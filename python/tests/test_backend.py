@@ -100,3 +100,15 @@ def test_vulkan_guaranteed_adaptive_meets_its_tolerance(root):
     assert gpu[..., 3].max() > 0.05
     with pytest.raises(ValueError, match="at least 1e-4"):
         vri.render(scene, backend="vulkan", **dict(kw, tolerance=5e-5))
+
+
+@gpu
+def test_vulkan_tet_raycast_follows_the_cpu(root):
+    scene = vri.load_scene(root / "scenes" / "blunt_fin_lit.json")
+    kw = dict(method="tet-raycast", **SMALL)
+    cpu = vri.render(scene, **kw)
+    gpu = vri.render(scene, backend="vulkan", **kw)
+    assert np.abs(gpu - cpu).max() <= 1e-4
+    assert cpu[..., 3].max() > 0.05
+    with pytest.raises(ValueError, match="not on the GPU yet"):
+        vri.render(scene, method="pt", backend="vulkan", **SMALL)
