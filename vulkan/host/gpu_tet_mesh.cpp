@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "vri/core/error.hpp"
 #include "vri/mesh/boundary_bvh.hpp"
 #include "vri/mesh/point_gradients.hpp"
 #include "vri/mesh/tet_walk.hpp"
@@ -51,7 +52,8 @@ std::vector<float> bvh_nodes(const BoundaryBvh& bvh, Vec3 c, double pad) {
     out.push_back(std::bit_cast<float>(node.first));
     out.push_back(std::bit_cast<float>(node.count));
   }
-  if (out.empty()) out.assign(8, 0.0f);  // no boundary: count 0 and first 0 never hit (no faces)
+  // A finite mesh has a boundary (TetMesh refuses empty ones).
+  if (out.empty()) throw Error("tet-raycast: the mesh has no boundary faces");
   return out;
 }
 
@@ -63,7 +65,6 @@ std::vector<float> bvh_faces(const BoundaryBvh& bvh, Vec3 c) {
     push(out, f.e2);
     out.push_back(std::bit_cast<float>(f.slot));
   }
-  if (out.empty()) out.assign(10, 0.0f);
   return out;
 }
 
