@@ -38,18 +38,13 @@ VulkanAdaptive::VulkanAdaptive(std::shared_ptr<const VulkanDevice> device, const
   if (params.tolerance < kMinTolerance)
     throw Error("--backend vulkan: adaptive computes in float on the GPU; its tolerance must be at least 1e-5, got " +
                 std::to_string(params.tolerance));
-  if (scene.lighting.enabled) {
-    shader_.emplace(scene.lighting, scene.grid());
-    shading_.emplace(device_, scene.lighting, *shader_, scene.grid());
-  }
   const Bindings b = inputs();
   kernel_.emplace(device_, kSpirv, static_cast<int>(b.list().size()) + 1, sizeof(Params), b.split_arrays());
 }
 
-// Unlit, the volume stands in for the gradients the shader does not read.
 Bindings VulkanAdaptive::inputs() const {
   Bindings b;
-  b.add(volume_.samples).add(shading_ ? shading_->gradients : volume_.samples);
+  b.add(volume_.samples).add(gradients());
   b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */);
   return b;
 }

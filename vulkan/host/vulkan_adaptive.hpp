@@ -24,8 +24,6 @@ class VulkanAdaptive final : public VulkanGridRenderer {
 
  private:
   GpuTransferFunction tf_;
-  std::optional<HeadlightShader> shader_;  // lit: the gradients
-  std::optional<GpuShading> shading_;
   std::optional<ComputeKernel> kernel_;  // made once the arrays are on the device
   // The kernel's inputs in binding order, the rays' slot null.
   Bindings inputs() const;

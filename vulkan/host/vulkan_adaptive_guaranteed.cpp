@@ -59,10 +59,6 @@ VulkanGuaranteedAdaptive::VulkanGuaranteedAdaptive(std::shared_ptr<const VulkanD
                 "least 1e-4, got " + std::to_string(params.tolerance));
   const GridVolume& volume = scene.grid();
   margin_ = static_cast<float>(interpolation_margin(volume));
-  if (scene.lighting.enabled) {
-    shader_.emplace(scene.lighting, volume);
-    shading_.emplace(device_, scene.lighting, *shader_, volume);
-  }
   // The CPU's classification (adaptive_guaranteed.cpp): the macro cells it walks past.
   const detail::Skipping skipping(volume, ZeroOpacity(scene.transfer_function), m.fast, "adaptive");
   empty_.emplace(device_, volume, skipping.space());
@@ -70,10 +66,9 @@ VulkanGuaranteedAdaptive::VulkanGuaranteedAdaptive(std::shared_ptr<const VulkanD
   kernel_.emplace(device_, kSpirv, static_cast<int>(b.list().size()) + 1, sizeof(Params), b.split_arrays());
 }
 
-// Unlit, the volume stands in for the gradients the shader does not read.
 Bindings VulkanGuaranteedAdaptive::inputs() const {
   Bindings b;
-  b.add(volume_.samples).add(shading_ ? shading_->gradients : volume_.samples);
+  b.add(volume_.samples).add(gradients());
   b.add(&tf_.values).add(&tf_.bins).add(&opaque_before_).add(nullptr /* the rays */).add(&empty_->bits);
   return b;
 }

@@ -27,8 +27,6 @@ class VulkanGuaranteedAdaptive final : public VulkanGridRenderer {
  private:
   GpuTransferFunction tf_;
   GpuBuffer opaque_before_;  // per segment i: the segments before it with tau not zero
-  std::optional<HeadlightShader> shader_;  // lit: the gradients
-  std::optional<GpuShading> shading_;
   std::optional<GpuEmptySpace> empty_;
   std::optional<ComputeKernel> kernel_;  // made once the arrays are on the device
   float margin_;                         // EmptySpace's: rounding of interpolated scalars

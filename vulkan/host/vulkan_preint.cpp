@@ -84,8 +84,6 @@ VulkanPreint::VulkanPreint(std::shared_ptr<const VulkanDevice> device, const Sce
     if (tables_[k]) on_device_[k].emplace(device_, bytes_of(tables_[k], floats), names[k]);
   lighting_.weighted = interpolated ? tables_ : std::array<const float*, 3>{};
   if (lighting.enabled) {
-    shader_.emplace(lighting, scene.grid());
-    shading_.emplace(device_, lighting, *shader_, scene.grid());
     float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, sampler_);
     lighting_.shading = float_shading_.get();
   }

@@ -48,8 +48,6 @@ class VulkanPreint final : public VulkanGridRenderer {
   std::array<const float*, 3> tables_{};   // the shader's table, weighted1 and weighted2 (null: none)
   std::array<std::optional<GpuArray>, 3> on_device_;
   // Lit: the shader and its gradients, the float shading the host's last slabs use.
-  std::optional<HeadlightShader> shader_;
-  std::optional<GpuShading> shading_;
   FloatSampler sampler_;
   std::unique_ptr<detail::FloatShading> float_shading_;
   detail::FloatLighting lighting_;  // as the CPU's float march lights its last slabs

@@ -71,10 +71,6 @@ VulkanPreint2Dual::VulkanPreint2Dual(std::shared_ptr<const VulkanDevice> device,
         device_, build_second_order_length_table(*make, tf_, lengths_, max_length_, scene.method.iterations),
         "the pre-integration table"));
   }
-  if (lighting.enabled) {
-    shader_.emplace(lighting, scene.grid());
-    shading_.emplace(device_, lighting, *shader_, scene.grid());
-  }
   const detail::Skipping skipping(scene.grid(), ZeroOpacity(tf_, TableOrder::Second), scene.method.fast,
                                   "preint2-dual");
   empty_.emplace(device_, scene.grid(), skipping.space());

@@ -30,8 +30,6 @@ class VulkanPreint2Dual final : public VulkanGridRenderer {
   int mode_ = 0;  // the shader's p.lit: 0 unlit, 1 sampled, 2 interpolated
   // The table, or the full, middle and back weighted tables, each its slices one after another.
   std::array<std::optional<GpuArray>, 3> tables_;
-  std::optional<HeadlightShader> shader_;
-  std::optional<GpuShading> shading_;
   std::optional<GpuEmptySpace> empty_;
   std::optional<ComputeKernel> kernel_;
   Bindings inputs() const;

@@ -35,10 +35,6 @@ VulkanRiemann::VulkanRiemann(std::shared_ptr<const VulkanDevice> device, const S
     : VulkanGridRenderer(std::move(device), scene),
       h_(detail::world_step(scene.grid(), scene.method.step, "riemann")),
       tf_(device_, FloatTransferFunction(scene.transfer_function)) {
-  if (scene.lighting.enabled) {
-    shader_.emplace(scene.lighting, scene.grid());
-    shading_.emplace(device_, scene.lighting, *shader_, scene.grid());
-  }
   // The CPU's classification (riemann.cpp): what it would leap over.
   const detail::Skipping skipping(scene.grid(), ZeroOpacity(scene.transfer_function), scene.method.fast, "riemann");
   empty_.emplace(device_, scene.grid(), skipping.space());
@@ -46,10 +42,9 @@ VulkanRiemann::VulkanRiemann(std::shared_ptr<const VulkanDevice> device, const S
   kernel_.emplace(device_, kSpirv, static_cast<int>(b.list().size()) + 1, sizeof(Params), b.split_arrays());
 }
 
-// Unlit, the volume stands in for the gradients the shader does not read.
 Bindings VulkanRiemann::inputs() const {
   Bindings b;
-  b.add(volume_.samples).add(shading_ ? shading_->gradients : volume_.samples);
+  b.add(volume_.samples).add(gradients());
   b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */).add(&empty_->bits);
   return b;
 }

@@ -22,8 +22,6 @@ class VulkanRiemann final : public VulkanGridRenderer {
  private:
   double h_;  // world units
   GpuTransferFunction tf_;
-  std::optional<HeadlightShader> shader_;  // lit: the gradients
-  std::optional<GpuShading> shading_;
   std::optional<GpuEmptySpace> empty_;  // the macro cells the CPU would leap over
   std::optional<ComputeKernel> kernel_;  // made once the arrays are on the device
   // The kernel's inputs in binding order, the rays' slot null.
