@@ -57,12 +57,20 @@ struct GpuEmptySpace {
   SkipParams params;
 };
 
+// The shaders' transfer-function push constants (transfer_function.glsl:
+// `float tf_lo, tf_scale; int tf_bins, segments;`).
+struct TfParams {
+  float lo, scale;
+  std::int32_t bins, segments;
+};
+
 struct GpuTransferFunction {
   GpuTransferFunction(std::shared_ptr<const VulkanDevice> device, const FloatTransferFunction& tf);
   GpuBuffer values;  // breakpoints, s_ref, value r g b tau, slope r g b tau; `segments` each
   GpuBuffer bins;    // first segment per bin
   int segments;
   float lo, scale;
+  TfParams params() const { return {lo, scale, FloatTransferFunction::kBins, segments}; }
 };
 
 // The pre-integrated marches' push constants after GridParams (preint.comp,

@@ -20,8 +20,7 @@ const std::uint32_t kSpirv[] = {
 // adaptive.comp's push constants.
 struct Params {
   GridParams grid;
-  float tf_lo, tf_scale;
-  std::int32_t tf_bins, segments;
+  TfParams tf;
   ShadingParams shading;  // lit 1: each sample lit
   float tolerance, h0, hmin, hmax;  // world units
   std::int32_t coupled;
@@ -56,10 +55,7 @@ Image VulkanAdaptive::render(const Camera& camera, const RenderOptions& options)
   const double vu = volume.voxel_unit();
   const std::vector<float> rays = entry_rays(camera, volume, options.threads);
   Params p{grid_params(*device_, volume, volume_.type, 0),
-           tf_.lo,
-           tf_.scale,
-           FloatTransferFunction::kBins,
-           tf_.segments,
+           tf_.params(),
            shading_params(shading_, 1),
            static_cast<float>(m.tolerance),
            static_cast<float>(m.h0 * vu),

@@ -24,8 +24,7 @@ const std::uint32_t kSpirv[] = {
 // adaptive_guaranteed.comp's push constants.
 struct Params {
   GridParams grid;
-  float tf_lo, tf_scale;
-  std::int32_t tf_bins, segments;
+  TfParams tf;
   ShadingParams shading;  // lit 1: each sample lit
   float tolerance, hmax, hfloor;  // world units
   float margin;
@@ -83,10 +82,7 @@ Image VulkanGuaranteedAdaptive::render(const Camera& camera, const RenderOptions
   const double hmax = shading_ ? std::min(m.hmax, 0.25) * vu : m.hmax * vu;
   const std::vector<float> rays = entry_rays(camera, volume, options.threads);
   Params p{grid_params(*device_, volume, volume_.type, 0),
-           tf_.lo,
-           tf_.scale,
-           FloatTransferFunction::kBins,
-           tf_.segments,
+           tf_.params(),
            shading_params(shading_, 1),
            static_cast<float>(m.tolerance),
            static_cast<float>(hmax),
