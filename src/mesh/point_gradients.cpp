@@ -44,8 +44,8 @@ Vec3 PointGradients::sample(std::int32_t tet, Vec3 x) const {
          dot(l[2], x - a) * (g_[t[3]] - g0);
 }
 
-double PointGradients::flat_threshold() const {
-  return 1e-6 * (double(mesh_.max_value()) - mesh_.min_value());
+double PointGradients::flat_threshold(const TetMesh& mesh) {
+  return 1e-6 * (double(mesh.max_value()) - mesh.min_value());
 }
 
 }  // namespace vri

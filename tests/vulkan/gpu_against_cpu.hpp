@@ -28,6 +28,17 @@ inline Difference compare(const Image& a, const Image& b) {
   return d;
 }
 
+// The share of pixels of a and b differing by more than `bound` in some channel.
+inline double share_over(const Image& a, const Image& b, double bound) {
+  std::size_t over = 0;
+  for (std::size_t i = 0; i < a.data().size(); i += 4) {
+    double m = 0;
+    for (int c = 0; c < 4; ++c) m = std::max(m, std::abs(double(a.data()[i + c]) - b.data()[i + c]));
+    over += m > bound;
+  }
+  return double(over) / double(a.data().size() / 4);
+}
+
 inline double max_alpha(const Image& image) {
   double m = 0;
   for (std::size_t i = 3; i < image.data().size(); i += 4) m = std::max(m, double(image.data()[i]));

@@ -94,17 +94,9 @@ TEST_P(VulkanScene, AdaptiveFollowsTheCpu) {
     scene.method.tolerance = tolerance;
     const Image cpu = SceneRenderer(scene).render({.threads = 2});
     const Image gpu = SceneRenderer(scene, Backend::Vulkan).render({.threads = 2});
-    const auto share_over = [](const Image& a, const Image& b, double bound) {
-      std::size_t over = 0;
-      for (std::size_t i = 0; i < a.data().size(); i += 4) {
-        double m = 0;
-        for (int c = 0; c < 4; ++c) m = std::max(m, std::abs(double(a.data()[i + c]) - b.data()[i + c]));
-        over += m > bound;
-      }
-      return double(over) / (a.data().size() / 4);
-    };
-    EXPECT_LE(share_over(gpu, cpu, 1e-4), 0.01) << strategy;
-    EXPECT_NEAR(share_over(gpu, reference, tolerance), share_over(cpu, reference, tolerance), 0.01) << strategy;
+    EXPECT_LE(test::share_over(gpu, cpu, 1e-4), 0.01) << strategy;
+    EXPECT_NEAR(test::share_over(gpu, reference, tolerance), test::share_over(cpu, reference, tolerance), 0.01)
+        << strategy;
   }
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }
@@ -123,13 +115,7 @@ TEST_P(VulkanScene, GuaranteedAdaptiveMeetsTheTolerance) {
     const Image cpu = SceneRenderer(scene).render({.threads = 2});
     const Image gpu = SceneRenderer(scene, Backend::Vulkan).render({.threads = 2});
     EXPECT_LE(test::compare(gpu, reference).max, tolerance) << tolerance;
-    std::size_t apart = 0;
-    for (std::size_t i = 0; i < gpu.data().size(); i += 4) {
-      double m = 0;
-      for (int c = 0; c < 4; ++c) m = std::max(m, std::abs(double(gpu.data()[i + c]) - cpu.data()[i + c]));
-      apart += m > 1e-4;
-    }
-    EXPECT_LE(double(apart) / (gpu.data().size() / 4), 0.01) << tolerance;
+    EXPECT_LE(test::share_over(gpu, cpu, 1e-4), 0.01) << tolerance;
     // Not a blank image: the scene has something to get right.
     EXPECT_GT(test::max_alpha(gpu), 0.05);
   }

@@ -44,11 +44,13 @@ std::vector<std::int32_t> opaque_before(const FloatTransferFunction& tf) {
 }  // namespace
 
 VulkanGuaranteedAdaptive::VulkanGuaranteedAdaptive(std::shared_ptr<const VulkanDevice> device, const Scene& scene)
+    : VulkanGuaranteedAdaptive(std::move(device), scene, FloatTransferFunction(scene.transfer_function)) {}
+
+VulkanGuaranteedAdaptive::VulkanGuaranteedAdaptive(std::shared_ptr<const VulkanDevice> device, const Scene& scene,
+                                                   const FloatTransferFunction& tf)
     : VulkanGridRenderer(std::move(device), scene),
-      tf_(device_, FloatTransferFunction(scene.transfer_function)),
-      opaque_before_(device_,
-                     std::as_bytes(std::span<const std::int32_t>(
-                         opaque_before(FloatTransferFunction(scene.transfer_function)))),
+      tf_(device_, tf),
+      opaque_before_(device_, std::as_bytes(std::span<const std::int32_t>(opaque_before(tf))),
                      "the transfer function's segments") {
   const MethodSpec& m = scene.method;
   const AdaptiveParams params{m.tolerance, m.h0, m.hmin, m.hmax, parse_adaptive_strategy(m.strategy)};

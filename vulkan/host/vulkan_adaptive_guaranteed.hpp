@@ -25,6 +25,8 @@ class VulkanGuaranteedAdaptive final : public VulkanGridRenderer {
   Image render(const Camera& camera, const RenderOptions& options) const override;
 
  private:
+  VulkanGuaranteedAdaptive(std::shared_ptr<const VulkanDevice> device, const Scene& scene,
+                           const FloatTransferFunction& tf);
   GpuTransferFunction tf_;
   GpuBuffer opaque_before_;  // per segment i: the segments before it with tau not zero
   std::optional<GpuEmptySpace> empty_;

@@ -7,6 +7,7 @@
 #include "ray_setup.hpp"
 #include "vri/integrators/make_integrator.hpp"
 #include "vri/mesh/point_gradients.hpp"
+#include "vri/shading/headlight_shader.hpp"
 #include "vri/tables/float_lookup.hpp"
 #include "vri/tables/preintegration_table.hpp"
 #include "vri/tables/weighted_tables.hpp"
@@ -59,7 +60,16 @@ VulkanTetRaycast::VulkanTetRaycast(std::shared_ptr<const VulkanDevice> device, c
     axis_ = table.slices().front().axis();
     tables_[0].emplace(on_device(device_, table, "the pre-integration table"));
   }
-  if (mode_ != 0) shader_.emplace(scene.lighting, PointGradients(mesh).flat_threshold());
+  if (mode_ != 0) {
+    const Lighting& l = scene.lighting;
+    const HeadlightShader checked(l, PointGradients::flat_threshold(mesh));  // refuses bad coefficients
+    shading_ = {mode_,
+                static_cast<float>(l.ambient),
+                static_cast<float>(l.diffuse),
+                static_cast<float>(l.specular),
+                static_cast<float>(l.shininess),
+                static_cast<float>(checked.flat_threshold())};
+  }
   const Bindings b = inputs();
   kernel_.emplace(device_, kSpirv, static_cast<int>(b.list().size()) + 1, sizeof(Params), b.split_arrays());
 }
@@ -76,22 +86,13 @@ Image VulkanTetRaycast::render(const Camera& camera, const RenderOptions& option
   throw_if_cancelled(options);
   const std::vector<float> rays = mesh_rays(camera, scene_.mesh(), mesh_.centre, options.threads);
   const FloatAxis axis(axis_);
-  const Lighting& l = scene_.lighting;
-  ShadingParams shading;
-  if (shader_)
-    shading = {mode_,
-               static_cast<float>(l.ambient),
-               static_cast<float>(l.diffuse),
-               static_cast<float>(l.specular),
-               static_cast<float>(l.shininess),
-               static_cast<float>(shader_->flat_threshold())};
   GridParams grid{};
   grid.part_shift = device_->part_shift();
   Params p{grid,
            axis.size(),
            axis.lo(),
            axis.scale(),
-           shading,
+           shading_,
            static_cast<float>(max_length_),
            lengths_,
            static_cast<std::int32_t>(scene_.mesh().size()),

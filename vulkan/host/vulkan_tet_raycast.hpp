@@ -12,7 +12,6 @@
 #include "gpu_array.hpp"
 #include "gpu_scene_data.hpp"  // ShadingParams
 #include "gpu_tet_mesh.hpp"
-#include "vri/shading/headlight_shader.hpp"
 #include "vri/render/backend.hpp"
 #include "vri/scene/scene.hpp"
 #include "vri/tables/discrete_tf.hpp"
@@ -34,7 +33,7 @@ class VulkanTetRaycast final : public GpuSceneRenderer {
   int mode_;
   ScalarAxis axis_;  // the tables' scalar axis  // 0 unlit, 1 sampled, 2 interpolated
   std::array<std::optional<GpuArray>, 2> tables_;  // the table, or the front and back weighted tables
-  std::optional<HeadlightShader> shader_;         // lit: the coefficients
+  ShadingParams shading_;  // lit: the coefficients (lit 0: unlit)
   std::optional<ComputeKernel> kernel_;
   Bindings inputs() const;
 };

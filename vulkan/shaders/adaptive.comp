@@ -45,6 +45,7 @@ layout(std430, binding = 11) writeonly buffer Image { vec4 px[]; } image;
 #include "grid_sampler.glsl"
 #include "transfer_function.glsl"
 #include "shading.glsl"
+#include "simpson_step.glsl"
 
 const uint kRayFloats = 17u;
 
@@ -86,15 +87,7 @@ void sample_step(float t, float h) {
   for (int k = 0; k < 5; ++k) f[k] = cached(t + h * (0.25 * float(k)));
 }
 
-float whole(float a, float b, float c, float h) { return h / 6.0 * (a + 4.0 * b + c); }
-float halves(float g0, float g1, float g2, float g3, float g4, float h) {
-  return h / 12.0 * (g0 + 4.0 * g1 + 2.0 * g2 + 4.0 * g3 + g4);
-}
-float error_of(float dd, float s) { return abs(dd - s) / 15.0; }
 bool accepted(float err, float h) { return err <= p.tolerance * h / p.h0 || h <= p.hmin; }
-float tau_error(float h) {
-  return error_of(halves(f[0].w, f[1].w, f[2].w, f[3].w, f[4].w, h), whole(f[0].w, f[2].w, f[4].w, h));
-}
 
 // Algorithm 2's step control (simpson5.hpp, StepControl).
 struct Control {
@@ -114,38 +107,17 @@ vec3 C = vec3(0.0);
 float T = 1.0;
 Control outer;
 
-// The outer integral over [a, b] (simpson_colour_step.hpp: colour_step, add_step).
+// The outer integral over [a, b] (simpson_step.glsl).
 void outer_integral(float a, float b) {
   for (float u = a; u < b;) {
     const float h = min(outer.h, b - u);
     sample_step(u, h);
-    // The optical depth from u to each sample: the quartic through the tau samples.
-    const float q = h / 4.0;
-    float depth[5];
-    depth[0] = 0.0;
-    depth[1] = q * (251.0 * f[0].w + 646.0 * f[1].w - 264.0 * f[2].w + 106.0 * f[3].w - 19.0 * f[4].w) / 720.0;
-    depth[2] = q * (29.0 * f[0].w + 124.0 * f[1].w + 24.0 * f[2].w + 4.0 * f[3].w - f[4].w) / 90.0;
-    depth[3] = q * (27.0 * f[0].w + 102.0 * f[1].w + 72.0 * f[2].w + 42.0 * f[3].w - 3.0 * f[4].w) / 80.0;
-    depth[4] = q * (14.0 * f[0].w + 64.0 * f[1].w + 24.0 * f[2].w + 64.0 * f[3].w + 14.0 * f[4].w) / 45.0;
-    vec4 g[5];
-    for (int k = 0; k < 5; ++k) {
-      const float w = f[k].w * T * exp_neg(depth[k]);
-      g[k] = vec4(f[k].rgb * w, w);
-    }
-    const vec4 S = h / 6.0 * (g[0] + 4.0 * g[2] + g[4]);
-    const vec4 D = h / 12.0 * (g[0] + 4.0 * g[1] + 2.0 * g[2] + 4.0 * g[3] + g[4]);
-    const vec4 E = abs(D - S) / 15.0;
-    if (!accepted(max(max(E.x, E.y), max(E.z, E.w)), h)) {
+    const ColourStep st = colour_step(f, T, h);
+    if (!accepted(colour_error(st), h)) {
       failed(outer, h);
       continue;
     }
-    // The step's opacity exactly for its optical depth; its colour Boole's
-    // estimate rescaled to that opacity.
-    const float T_after = T * exp_neg(depth[4]);
-    const vec4 boole = D + (D - S) / 15.0;
-    const float scale = boole.w > 0.0 ? (T - T_after) / boole.w : 0.0;
-    C += scale * boole.rgb;
-    T = T_after;
+    T = add_step(st, T, C);
     succeeded(outer);
     u = h >= b - u ? b : u + h;
   }
@@ -168,7 +140,7 @@ void main() {
     for (;;) {
       h = min(inner.h, t_end - t);
       sample_step(t, h);
-      if (accepted(tau_error(h), h)) break;
+      if (accepted(tau_error(f, h), h)) break;
       failed(inner, h);
     }
     succeeded(inner);

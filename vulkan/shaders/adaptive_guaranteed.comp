@@ -57,6 +57,7 @@ layout(std430, binding = 13) writeonly buffer Image { vec4 px[]; } image;
 #include "transfer_function.glsl"
 #include "shading.glsl"
 #include "cubic.glsl"
+#include "simpson_step.glsl"
 
 const uint kRayFloats = 17u;
 
@@ -120,12 +121,6 @@ vec4 sample_at(int seg, float t) {
   return v;
 }
 
-// Simpson's rule on five samples: whole step and two halves.
-vec4 whole(vec4 f0, vec4 f2, vec4 f4, float h) { return h / 6.0 * (f0 + 4.0 * f2 + f4); }
-vec4 halves(vec4 f0, vec4 f1, vec4 f2, vec4 f3, vec4 f4, float h) {
-  return h / 12.0 * (f0 + 4.0 * f1 + 2.0 * f2 + 4.0 * f3 + f4);
-}
-
 // One smooth piece [x, y] of the cell on segment seg (integrate_piece).
 void integrate_piece(int seg, float x, float y) {
   vec4 f[5];
@@ -143,26 +138,9 @@ void integrate_piece(int seg, float x, float y) {
       at[k] = t;
       known[k] = true;
     }
-    // The optical depth from u to each sample: the quartic through the tau samples.
-    const float q = h / 4.0;
-    float depth[5];
-    depth[0] = 0.0;
-    depth[1] = q * (251.0 * f[0].w + 646.0 * f[1].w - 264.0 * f[2].w + 106.0 * f[3].w - 19.0 * f[4].w) / 720.0;
-    depth[2] = q * (29.0 * f[0].w + 124.0 * f[1].w + 24.0 * f[2].w + 4.0 * f[3].w - f[4].w) / 90.0;
-    depth[3] = q * (27.0 * f[0].w + 102.0 * f[1].w + 72.0 * f[2].w + 42.0 * f[3].w - 3.0 * f[4].w) / 80.0;
-    depth[4] = q * (14.0 * f[0].w + 64.0 * f[1].w + 24.0 * f[2].w + 64.0 * f[3].w + 14.0 * f[4].w) / 45.0;
-    vec4 g[5];
-    for (int k = 0; k < 5; ++k) {
-      const float w = f[k].w * T * exp_neg(depth[k]);
-      g[k] = vec4(f[k].rgb * w, w);
-    }
-    const vec4 S = whole(g[0], g[2], g[4], h), D = halves(g[0], g[1], g[2], g[3], g[4], h);
-    const vec4 E = abs(D - S) / 15.0;
-    const float tau_whole = h / 6.0 * (f[0].w + 4.0 * f[2].w + f[4].w);
-    const float tau_halves = h / 12.0 * (f[0].w + 4.0 * f[1].w + 2.0 * f[2].w + 4.0 * f[3].w + f[4].w);
-    const float depth_err = T * abs(tau_halves - tau_whole) / 15.0;
-    const bool ok = (max(max(E.x, E.y), max(E.z, E.w)) <= colour_density * h && depth_err <= depth_density * h) ||
-                    h <= p.hfloor;
+    const ColourStep st = colour_step(f, T, h);
+    const float depth_err = T * tau_error(f, h);
+    const bool ok = (colour_error(st) <= colour_density * h && depth_err <= depth_density * h) || h <= p.hfloor;
     if (!ok) {  // halve: 0, 1/4 and 1/2 of this try are 0, 1/2 and 1 of the next
       f[4] = f[2], at[4] = at[2];
       f[2] = f[1], at[2] = at[1];
@@ -171,13 +149,7 @@ void integrate_piece(int seg, float x, float y) {
       last_succeeded = false;
       continue;
     }
-    // The step's opacity exactly for its optical depth; its colour Boole's
-    // estimate rescaled to that opacity (simpson_colour_step.hpp, add_step).
-    const float T_after = T * exp_neg(depth[4]);
-    const vec4 boole = D + (D - S) / 15.0;
-    const float scale = boole.w > 0.0 ? (T - T_after) / boole.w : 0.0;
-    C += scale * boole.rgb;
-    T = T_after;
+    T = add_step(st, T, C);
     if (last_succeeded) h_next = min(2.0 * h_next, hcap);
     last_succeeded = true;
     f[0] = f[4], at[0] = at[4];

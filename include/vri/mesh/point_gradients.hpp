@@ -30,7 +30,8 @@ class PointGradients {
   // The barycentric interpolation of the four point gradients of `tet` at p.
   Vec3 sample(std::int32_t tet, Vec3 p) const;
   // SPEC §5's flat threshold on a mesh: 1e-6 (max - min) per unit length.
-  double flat_threshold() const;
+  double flat_threshold() const { return flat_threshold(mesh_); }
+  static double flat_threshold(const TetMesh& mesh);
 
  private:
   const TetMesh& mesh_;
