@@ -63,13 +63,9 @@ vec3 d;
 // The table at slab length l and scalars (s_f, s_m, s_b): the two slices
 // around l (length_bracket, slab_table.hpp) blended linearly.
 vec4 lookup(int which, float l, Place f, Place m, Place b) {
-  precise float u = clamp(l / p.max_length, 0.0, 1.0) * float(p.lengths - 1);
-  const int i = min(int(u), p.lengths - 2);
-  precise float w = u - float(i);
+  const Place at = length_place(l, p.max_length, p.lengths);
   const uint n = uint(p.table_n), slice = n * n * n;
-  const vec4 lo = blend_at(which, uint(i) * slice, f, m, b), hi = blend_at(which, uint(i + 1) * slice, f, m, b);
-  precise vec4 v = lo + w * (hi - lo);
-  return v;
+  return between(blend_at(which, uint(at.i) * slice, f, m, b), blend_at(which, uint(at.i + 1) * slice, f, m, b), at);
 }
 
 void main() {

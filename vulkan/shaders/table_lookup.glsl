@@ -14,6 +14,22 @@ struct Place {
   float w;
 };
 
+// Where slab length l falls among `lengths` slices of lengths
+// max_length m / (lengths - 1) (length_bracket, slab_table.hpp): slice i and
+// the weight w of slice i + 1, l clamped to [0, max_length].
+Place length_place(float l, float max_length, int lengths) {
+  precise float u = clamp(l / max_length, 0.0, 1.0) * float(lengths - 1);
+  const int i = min(int(u), lengths - 2);
+  precise float w = u - float(i);
+  return Place(i, w);
+}
+
+// Two slices' values blended by the length's weight.
+vec4 between(vec4 lo, vec4 hi, Place l) {
+  precise vec4 v = lo + l.w * (hi - lo);
+  return v;
+}
+
 Place place(float s) {
   precise float u = clamp((s - p.table_lo) * p.table_scale, 0.0, float(p.table_n - 1));
   const int i = min(int(u), p.table_n - 2);

@@ -174,14 +174,10 @@ bool next_entry(float t_min, float t_after, int skip, out float hit_t, out int h
 
 // The table at length l and scalars (s_f, s_b): the two slices around l blended linearly.
 vec4 lookup(int which, float l, float s_f, float s_b) {
-  precise float u = clamp(l / p.max_length, 0.0, 1.0) * float(p.lengths - 1);
-  const int i = min(int(u), p.lengths - 2);
-  precise float w = u - float(i);
+  const Place at = length_place(l, p.max_length, p.lengths);
   const uint slice = uint(p.table_n * p.table_n);
   const Place f = place(s_f), b = place(s_b);
-  const vec4 lo = blend_at(which, uint(i) * slice, f, b), hi = blend_at(which, uint(i + 1) * slice, f, b);
-  precise vec4 v = lo + w * (hi - lo);
-  return v;
+  return between(blend_at(which, uint(at.i) * slice, f, b), blend_at(which, uint(at.i + 1) * slice, f, b), at);
 }
 
 // The point gradients interpolated in `tet` at x (PointGradients::sample).
