@@ -5,16 +5,18 @@
 
 #include "simpson_colour_step.hpp"
 #include "vri/core/error.hpp"
+#include "vri/volume/empty_space.hpp"
 
 namespace vri {
 
 AdaptiveSimpsonIntegrator::AdaptiveSimpsonIntegrator(const GridVolume& volume,
                                                      const TransferFunction& tf,
                                                      const AdaptiveParams& params,
-                                                     const Lighting& lighting)
-    : volume_(volume), tf_(tf), tolerance_(params.tolerance) {
+                                                     const Lighting& lighting, const FastPath& fast)
+    : volume_(volume), tf_(tf), tolerance_(params.tolerance), skipping_(volume, ZeroOpacity(tf), fast, "adaptive") {
   params.validate();
   if (lighting.enabled) shader_.emplace(lighting, volume);
+  if (fast.skip_empty) cutoff_ = 0.1 * tolerance_ / std::max(1.0, shader_ ? shader_->max_brightness() : 1.0);
   if (params.strategy == AdaptiveStrategy::Guaranteed)
     throw Error("adaptive: AdaptiveSimpsonIntegrator implements coupled and decoupled only");
   const double vu = volume.voxel_unit();
@@ -52,15 +54,25 @@ class SampleCache {
 }  // namespace
 
 Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const {
+  return volume_.visit([&](auto values) { return integrate_typed(values.data(), ray, stats); });
+}
+
+template <class Value>
+Rgba AdaptiveSimpsonIntegrator::integrate_typed(const Value* values, const Ray& ray, RayStats& stats) const {
   const auto iv = volume_.clip(ray);
   if (!iv) return {0, 0, 0, 0};
   SampleCache cache;
+  // The ray in grid coordinates, u(t) = u0 + t du: no division per sample.
+  Vec3 u0, du;
+  for (int a = 0; a < 3; ++a) {
+    u0[a] = (ray.origin[a] - volume_.origin()[a]) / volume_.spacing()[a];
+    du[a] = ray.dir[a] / volume_.spacing()[a];
+  }
   auto eval = [&](double t) {
     ++stats.evaluations;
-    const Vec3 p = ray.at(t);
-    const TfSample v = tf_(volume_.sample(p));
+    const TfSample v = tf_(volume_.sample_grid(values, u0 + t * du));
     if (!shader_) return v;
-    const auto lt = shader_->at(p, ray.dir);
+    const auto lt = shader_->at(ray.at(t), ray.dir);
     return simpson5::lit(v, lt.a, lt.b);
   };
   TfSample f[5];
@@ -75,7 +87,6 @@ Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const
   // eps halves and doubles with the step: it is tolerance_ at h0.
   auto accepted = [&](double err, double h) { return err <= tolerance_ * h / h0_ || h <= hmin_; };
 
-  const double t_end = std::min(iv->t1, iv->own1);  // a brick integrates its own part (GridVolume::Brick)
   double T = 1;  // transmittance at the start of the next outer step
   double C[3] = {0, 0, 0};
   simpson5::StepControl inner{h0_}, outer{h0_};
@@ -101,27 +112,35 @@ Rgba AdaptiveSimpsonIntegrator::integrate(const Ray& ray, RayStats& stats) const
     }
   };
 
-  for (double t = std::max(iv->t0, iv->own0); t < t_end;) {
-    // I_I of Algorithm 3: the first step from t on which the optical depth is accurate.
-    double h;
-    for (;;) {
-      h = std::min(inner.h, t_end - t);
-      sample_step(t, h);
-      double s, d;
-      tau_integrals(h, s, d);
-      if (accepted(simpson5::error(d, s), h)) break;
-      inner.failed(h, hmin_);
+  // Algorithm 3 over [t0, t_end]: inner steps, each covered by the outer integral.
+  auto integrate_run = [&](double t0, double t_end) {
+    inner = outer = simpson5::StepControl{h0_};
+    for (double t = t0; t < t_end && T >= cutoff_;) {
+      // I_I of Algorithm 3: the first step from t on which the optical depth is accurate.
+      double h;
+      for (;;) {
+        h = std::min(inner.h, t_end - t);
+        sample_step(t, h);
+        double s, d;
+        tau_integrals(h, s, d);
+        if (accepted(simpson5::error(d, s), h)) break;
+        inner.failed(h, hmin_);
+      }
+      inner.succeeded(hmax_);
+      if (stats.record_steps) stats.steps.push_back({false, t, h, 0});
+      const double b = h >= t_end - t ? t_end : t + h;
+      const bool empty = std::all_of(f, f + 5, [](const TfSample& v) { return v.tau == 0; });
+      if (!empty) {
+        if (coupled_) outer = simpson5::StepControl{h};
+        outer_integral(t, b);
+      }
+      t = b;
     }
-    inner.succeeded(hmax_);
-    if (stats.record_steps) stats.steps.push_back({false, t, h, 0});
-    const double b = h >= t_end - t ? t_end : t + h;
-    const bool empty = std::all_of(f, f + 5, [](const TfSample& v) { return v.tau == 0; });
-    if (!empty) {
-      if (coupled_) outer = simpson5::StepControl{h};
-      outer_integral(t, b);
-    }
-    t = b;
-  }
+    return T >= cutoff_;
+  };
+  // A brick integrates its own part (GridVolume::Brick).
+  for_each_occupied_run(skipping_.space(), ray, owned_part(*iv),
+                        [&](const Interval& part) { return integrate_run(part.t0, part.t1); });
   return {C[0], C[1], C[2], 1 - T};
 }
 

@@ -74,7 +74,7 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
                            parse_adaptive_strategy(spec.strategy)};
     if (p.strategy == AdaptiveStrategy::Guaranteed)
       return std::make_unique<GuaranteedAdaptiveIntegrator>(volume, tf, p, lighting);
-    return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p, lighting);
+    return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p, lighting, spec.fast);
   }
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
   if (is_mesh_method(spec.name))

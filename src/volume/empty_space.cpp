@@ -77,4 +77,46 @@ EmptySpace::Run EmptySpace::run(const Ray& ray, double t, double t_max) const {
   return end;
 }
 
+EmptySpace::Walk::Walk(const EmptySpace& space, const Ray& ray, double t, double t_max)
+    : space_(space), ray_(ray), t_max_(t_max) {
+  const GridVolume& v = space.cells_.volume();
+  const auto& n = v.dims();
+  const Vec3 p = ray.at(t);
+  for (int a = 0; a < 3; ++a) {
+    const double u = std::clamp((p[a] - v.origin()[a]) / v.spacing()[a], 0.0, double(n[a] - 1));
+    cell_[a] = std::min(static_cast<int>(u), n[a] - 2) / MacroCells::kCells;
+    step_[a] = ray.dir[a] > 0 ? 1 : ray.dir[a] < 0 ? -1 : 0;
+  }
+  for (int a = 0; a < 3; ++a) leave_[a] = exit(a);
+}
+
+double EmptySpace::Walk::exit(int a) const {
+  if (step_[a] == 0) return std::numeric_limits<double>::infinity();
+  const GridVolume& v = space_.cells_.volume();
+  const double face = v.origin()[a] + (cell_[a] + (step_[a] > 0 ? 1 : 0)) * (MacroCells::kCells * v.spacing()[a]);
+  return (face - ray_.origin[a]) / ray_.dir[a];
+}
+
+bool EmptySpace::Walk::next(Run& run) {
+  if (done_) return false;
+  const auto& m = space_.cells_.dims();
+  const bool is_empty = space_.empty(space_.cells_.index(cell_[0], cell_[1], cell_[2]));
+  for (;;) {
+    // The face crossed first (the lower axis on ties).
+    const int a = leave_[0] <= leave_[1] ? (leave_[0] <= leave_[2] ? 0 : 2) : (leave_[1] <= leave_[2] ? 1 : 2);
+    const double leave = leave_[a];
+    cell_[a] += step_[a];
+    if (leave >= t_max_ || cell_[a] < 0 || cell_[a] >= m[a]) {
+      done_ = true;
+      run = {is_empty, t_max_};
+      return true;
+    }
+    leave_[a] = exit(a);
+    if (space_.empty(space_.cells_.index(cell_[0], cell_[1], cell_[2])) != is_empty) {
+      run = {is_empty, leave};
+      return true;
+    }
+  }
+}
+
 }  // namespace vri

@@ -237,12 +237,19 @@ TEST(AdaptiveSimpson, EmptySpaceSkipsTheOuterIntegral) {
   const GridVolume vol = sphere_distance({33, 33, 33}, 8);
   const Ray ray{{-1, 16.2, 16.3}, {1, 0, 0}};  // 32 voxel units in the medium
   const TransferFunction empty({{-100, 1, 1, 1, 0}, {100, 1, 1, 1, 0}});
+  const FastPath plain{.skip_empty = false};
   for (AdaptiveStrategy st : {AdaptiveStrategy::Coupled, AdaptiveStrategy::Decoupled}) {
     RayStats stats;
-    const Rgba c = AdaptiveSimpsonIntegrator(vol, empty, {.tolerance = 1e-3, .strategy = st}).integrate(ray, stats);
+    const Rgba c =
+        AdaptiveSimpsonIntegrator(vol, empty, {.tolerance = 1e-3, .strategy = st}, {}, plain).integrate(ray, stats);
     EXPECT_EQ(c[3], 0);
     // Inner steps only: 0.5 and 1 then steps of hmax = 2, 4 samples each after the first.
     EXPECT_LE(stats.evaluations, 1 + 4 * (2 + 16));
+    EXPECT_GT(stats.evaluations, 1 + 4 * 16);
+    // Skipping: every macro cell is empty, nothing is sampled.
+    RayStats skipped;
+    AdaptiveSimpsonIntegrator(vol, empty, {.tolerance = 1e-3, .strategy = st}).integrate(ray, skipped);
+    EXPECT_EQ(skipped.evaluations, 0);
   }
   RayStats none;
   GuaranteedAdaptiveIntegrator(vol, empty, {.tolerance = 1e-3}).integrate(ray, none);
@@ -271,6 +278,44 @@ TEST(AdaptiveSimpson, EmptySpaceSkipsTheOuterIntegral) {
       }
     EXPECT_GT(outer, 0);
   }
+}
+
+// The paper's strategies with the fast path (issue 21): only the runs of
+// non-empty macro cells are integrated, each from h0, and the ray stops at
+// T < 0.1 tol. On a ball in a large empty box that takes a fraction of the
+// plain algorithm's evaluations, and the pixels stay as close to `exact` as
+// the plain algorithm's (the steps differ, not their error control).
+TEST(AdaptiveSimpson, PaperStrategiesSkipEmptySpaceAndStopEarly) {
+  const GridVolume vol = sphere_distance({49, 49, 49}, 12);
+  const TransferFunction inside({{-12, 1, 0.5, 0.2, 0.2}, {-4, 0.2, 0.6, 1, 0.05}, {0, 1, 0.5, 0.2, 0}});
+  const ExactIntegrator exact(vol, inside, 1e-9);
+  const auto rays = view_rays(vol, 12);
+  for (AdaptiveStrategy st : {AdaptiveStrategy::Coupled, AdaptiveStrategy::Decoupled}) {
+    const AdaptiveParams params = paper_params(1e-4, st);
+    const AdaptiveSimpsonIntegrator skipping(vol, inside, params);
+    const AdaptiveSimpsonIntegrator plain(vol, inside, params, {}, FastPath{.skip_empty = false});
+    long long with = 0, without = 0;
+    double err_with = 0, err_without = 0;
+    for (const Ray& r : rays) {
+      RayStats a, b;
+      const Rgba ref = exact.integrate(r);
+      err_with = std::max(err_with, max_diff(skipping.integrate(r, a), ref));
+      err_without = std::max(err_without, max_diff(plain.integrate(r, b), ref));
+      with += a.evaluations;
+      without += b.evaluations;
+    }
+    EXPECT_GT(with, 0) << int(st);
+    EXPECT_LT(with, without / 3) << int(st);
+    EXPECT_LE(err_with, std::max(2 * err_without, 1e-4)) << int(st);
+  }
+  // An opaque medium: the ray stops once T < 0.1 tol, after a fraction of the box.
+  const TransferFunction opaque({{-100, 1, 1, 1, 2}, {100, 1, 1, 1, 2}});
+  const Ray ray{{-1, 24.2, 24.3}, {1, 0, 0}};
+  RayStats stopped, through;
+  const Rgba a = AdaptiveSimpsonIntegrator(vol, opaque, {.tolerance = 1e-3}).integrate(ray, stopped);
+  AdaptiveSimpsonIntegrator(vol, opaque, {.tolerance = 1e-3}, {}, FastPath{.skip_empty = false}).integrate(ray, through);
+  EXPECT_GE(a[3], 1 - 1e-4);
+  EXPECT_LT(stopped.evaluations, through.evaluations / 4);
 }
 
 TEST(AdaptiveSimpson, EvaluationsAreReusedBetweenHalvesAndNeighbours) {

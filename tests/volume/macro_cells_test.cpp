@@ -231,6 +231,61 @@ TEST(EmptySpace, OccupiedRunsPartitionTheRay) {
   EXPECT_EQ(calls, 1);
 }
 
+// One walk hands out the runs: on sparse random data, rays started on macro
+// cell faces and grid lines (where rounding puts a point on either side) have
+// their parts cover exactly the points whose macro cell is non-empty. A walk
+// that located each run's first cell afresh could land back in the empty
+// cell it had just left, find a run of no length there and give up, handing
+// out the rest of the ray (empty cells too) as one part.
+TEST(EmptySpace, OccupiedRunsCoverExactlyTheNonEmptyCells) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  const GridVolume volume =
+      test::volume_from({41, 41, 41}, [&](double, double, double) { return u(rng) < 4e-4 ? 15.0 : 0.0; });
+  const MacroCells cells(volume);
+  const EmptySpace space(cells, ZeroOpacity(hat()));
+  ASSERT_GT(space.empty_count(), cells.count() / 4);
+  ASSERT_LT(space.empty_count(), cells.count() * 3 / 4);
+  const auto cell_empty = [&](Vec3 p) {
+    int m[3];
+    for (int a = 0; a < 3; ++a) m[a] = std::min(static_cast<int>(std::clamp(p[a], 0.0, 40.0)), 39) / MacroCells::kCells;
+    return space.empty(cells.index(m[0], m[1], m[2]));
+  };
+  int parts_seen = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    // From a point on a macro face (x = 8k) or a grid line, in a direction
+    // often along an axis or a diagonal.
+    Vec3 from{8.0 * int(u(rng) * 6), double(int(u(rng) * 41)), 40 * u(rng)};
+    const int kind = trial % 4;
+    Vec3 dir = kind == 0   ? Vec3{1, 0, 0}
+               : kind == 1 ? Vec3{1, 1, 0}
+               : kind == 2 ? Vec3{1, 1, 1}
+                           : Vec3{u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5};
+    if (trial % 8 >= 4) dir = -1.0 * dir;
+    const Ray ray{from - 100.0 * dir, dir};
+    const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
+    if (!iv) continue;
+    std::vector<Interval> parts;
+    for_each_occupied_run(&space, ray, *iv, [&](const Interval& part) {
+      parts.push_back(part);
+      return true;
+    });
+    parts_seen += static_cast<int>(parts.size());
+    for (int k = 0; k <= 200; ++k) {
+      const double t = iv->t0 + (iv->t1 - iv->t0) * (k + 0.37) / 201;
+      bool inside = false, near_end = false;
+      for (const Interval& part : parts) {
+        inside = inside || (t > part.t0 && t < part.t1);
+        near_end = near_end || std::abs(t - part.t0) < 1e-6 || std::abs(t - part.t1) < 1e-6;
+      }
+      if (!near_end) {
+        ASSERT_EQ(inside, !cell_empty(ray.at(t))) << "trial " << trial << " t " << t;
+      }
+    }
+  }
+  EXPECT_GT(parts_seen, 200);
+}
+
 // The ranges are computed once per volume and shared by its copies (a
 // transfer-function edit makes a new integrator, not new ranges); concurrent
 // first uses agree on one computation; another volume gets its own.

@@ -7,6 +7,8 @@
 #include "ray_setup.hpp"
 #include "vri/core/error.hpp"
 #include "vri/integrators/adaptive_params.hpp"
+#include "vri/integrators/fast_path.hpp"
+#include "vri/tables/zero_opacity.hpp"
 #include "vri/transfer/float_transfer_function.hpp"
 
 namespace vri::vulkan {
@@ -24,6 +26,7 @@ struct Params {
   ShadingParams shading;  // lit 1: each sample lit
   float tolerance, h0, hmin, hmax;  // world units
   std::int32_t coupled;
+  SkipParams skip;
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
@@ -37,6 +40,9 @@ VulkanAdaptive::VulkanAdaptive(std::shared_ptr<const VulkanDevice> device, const
   if (params.tolerance < kMinTolerance)
     throw Error("--backend vulkan: adaptive computes in float on the GPU; its tolerance must be at least 1e-5, got " +
                 std::to_string(params.tolerance));
+  // The CPU's classification (adaptive_simpson.cpp): its runs of non-empty macro cells.
+  const detail::Skipping skipping(scene.grid(), ZeroOpacity(scene.transfer_function), m.fast, "adaptive");
+  empty_.emplace(device_, scene.grid(), skipping.space());
   const Bindings b = inputs();
   kernel_.emplace(device_, kSpirv, static_cast<int>(b.list().size()) + 1, sizeof(Params), b.split_arrays());
 }
@@ -44,7 +50,7 @@ VulkanAdaptive::VulkanAdaptive(std::shared_ptr<const VulkanDevice> device, const
 Bindings VulkanAdaptive::inputs() const {
   Bindings b;
   b.add(volume_.samples).add(gradients());
-  b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */);
+  b.add(&tf_.values).add(&tf_.bins).add(nullptr /* the rays */).add(&empty_->bits);
   return b;
 }
 
@@ -61,7 +67,8 @@ Image VulkanAdaptive::render(const Camera& camera, const RenderOptions& options)
            static_cast<float>(m.h0 * vu),
            static_cast<float>(m.hmin * vu),
            static_cast<float>(m.hmax * vu),
-           parse_adaptive_strategy(m.strategy) == AdaptiveStrategy::Coupled ? 1 : 0};
+           parse_adaptive_strategy(m.strategy) == AdaptiveStrategy::Coupled ? 1 : 0,
+           empty_->params};
   return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kEntryRayFloats,
                     p.grid, &p);
 }

@@ -4,7 +4,8 @@
 // CPU's AdaptiveSimpsonIntegrator, one invocation per ray, in float. Its
 // step decisions follow float error estimates, so its image is not the
 // CPU's to the byte; it is held to the same error against `exact`
-// (docs/GPU.md). Tolerances below 1e-5 are refused: float roundings in the
+// (docs/GPU.md). It integrates the CPU's runs of non-empty macro cells
+// (shaders/occupied_runs.glsl) and stops where the CPU does. Tolerances below 1e-5 are refused: float roundings in the
 // estimates would then drive every step to hmin. The `guaranteed` strategy
 // is vulkan_adaptive_guaranteed.hpp.
 #include <memory>
@@ -24,6 +25,7 @@ class VulkanAdaptive final : public VulkanGridRenderer {
 
  private:
   GpuTransferFunction tf_;
+  std::optional<GpuEmptySpace> empty_;   // the macro cells the CPU leaps over
   std::optional<ComputeKernel> kernel_;  // made once the arrays are on the device
   // The kernel's inputs in binding order, the rays' slot null.
   Bindings inputs() const;

@@ -15,6 +15,9 @@
 // trilinear interpolation (grid_sampler.glsl), the transfer function
 // (transfer_function.glsl), lit with c a + b (shading.glsl). Positions
 // u0 + t du in double-float; t measured from the ray's entry.
+// With skipping on, as the CPU: only the runs of non-empty macro cells are
+// integrated (occupied_runs.glsl), each from h0, T carried, and the ray
+// stops at T < 0.1 tol / brightest.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 
@@ -27,6 +30,7 @@ layout(push_constant) uniform Params {
   float ka, kd, ks, shininess, flat_threshold;
   float tolerance, h0, hmin, hmax;  // world units
   int coupled;                      // 1: coupled, 0: decoupled
+  int skip, macro_x, macro_y, macro_z;  // empty_space.glsl
 } p;
 
 #include "split_array.glsl"
@@ -38,7 +42,8 @@ layout(std430, binding = 9) readonly buffer TfBins { int first[]; } bins;
 // unit (hi x3, lo x3), the length inside the box (hi, lo; < 0: the ray
 // misses it), the direction (x, y, z).
 layout(std430, binding = 10) readonly buffer Rays { float r[]; } rays;
-layout(std430, binding = 11) writeonly buffer Image { vec4 px[]; } image;
+layout(std430, binding = 11) readonly buffer EmptyCells { uint bits[]; } empty_cells;
+layout(std430, binding = 12) writeonly buffer Image { vec4 px[]; } image;
 
 #include "double_float.glsl"
 #include "exp_neg.glsl"
@@ -51,6 +56,10 @@ const uint kRayFloats = 17u;
 
 DF u0[3], du[3];
 vec3 d;
+
+#include "empty_space.glsl"
+#include "cell_walk.glsl"
+#include "occupied_runs.glsl"
 
 // (r, g, b, tau) at t, lit.
 vec4 eval(float t) {
@@ -123,19 +132,11 @@ void outer_integral(float a, float b) {
   }
 }
 
-void main() {
-  const uint pixel = PIXEL_INDEX();
-  if (pixel >= p.pixels) return;
-  const uint r = pixel * kRayFloats;
-  for (int a = 0; a < 3; ++a) {
-    u0[a] = DF(rays.r[r + a], rays.r[r + 3 + a]);
-    du[a] = DF(rays.r[r + 6 + a], rays.r[r + 9 + a]);
-  }
-  const float t_end = rays.r[r + 12u];
-  d = vec3(rays.r[r + 14u], rays.r[r + 15u], rays.r[r + 16u]);
+// Algorithm 3 over [t0, t_end] (AdaptiveSimpsonIntegrator's integrate_run).
+void integrate_run(float t0, float t_end, float cutoff) {
   Control inner = Control(p.h0, true);
   outer = Control(p.h0, true);
-  for (float t = 0.0; t < t_end;) {
+  for (float t = t0; t < t_end && T >= cutoff;) {
     float h;
     for (;;) {
       h = min(inner.h, t_end - t);
@@ -153,5 +154,25 @@ void main() {
     }
     t = b;
   }
+}
+
+void main() {
+  const uint pixel = PIXEL_INDEX();
+  if (pixel >= p.pixels) return;
+  const uint r = pixel * kRayFloats;
+  for (int a = 0; a < 3; ++a) {
+    u0[a] = DF(rays.r[r + a], rays.r[r + 3 + a]);
+    du[a] = DF(rays.r[r + 6 + a], rays.r[r + 9 + a]);
+  }
+  const DF t_end = DF(rays.r[r + 12u], rays.r[r + 13u]);
+  d = vec3(rays.r[r + 14u], rays.r[r + 15u], rays.r[r + 16u]);
+  const float brightest = p.lit != 0 ? max(1.0, p.ka + p.kd + p.ks) : 1.0;
+  const float cutoff = p.skip != 0 ? 0.1 * p.tolerance / brightest : 0.0;
+  // The runs of non-empty macro cells (for_each_occupied_run).
+  MacroWalk walk = macro_walk_start();
+  MacroRun run;
+  for (DF at = DF(0.0, 0.0); t_end.hi > 0.0 && df_less(at, t_end) && T >= cutoff && macro_next(walk, t_end, run);
+       at = run.t_end)
+    if (!run.empty && df_less(at, run.t_end)) integrate_run(df_float(at), df_float(run.t_end), cutoff);
   image.px[pixel] = vec4(C, 1.0 - T);
 }

@@ -14,12 +14,14 @@
 
 const int kMacroCells = 8;  // grid cells a side (MacroCells::kCells)
 
-bool macro_empty(Cell c) {
+// Macro cell m (its index per axis) is empty and skipping is on.
+bool macro_bit(ivec3 m) {
   if (p.skip == 0) return false;
-  const ivec3 m = c.index / kMacroCells;
   const uint i = uint(m.x + p.macro_x * (m.y + p.macro_y * m.z));
   return (empty_cells.bits[i >> 5] & (1u << (i & 31u))) != 0u;
 }
+
+bool macro_empty(Cell c) { return macro_bit(c.index / kMacroCells); }
 
 // The parameter s just short of where the ray leaves the macro cell of `c`.
 float macro_exit(Cell c) {

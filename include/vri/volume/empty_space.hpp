@@ -49,6 +49,26 @@ class EmptySpace {
   };
   Run run(const Ray& ray, double t, double t_max) const;
 
+  // One walk of the macro cells along a ray from the cell at t (the one
+  // GridVolume::sample reads there), run after run: each run starts exactly
+  // where the last one ended, so a walk never stalls on a face that
+  // rounding puts on the wrong side (run() locates its cell afresh).
+  class Walk {
+   public:
+    Walk(const EmptySpace& space, const Ray& ray, double t, double t_max);
+    // The run from the current cell on; false once t_max was reached.
+    bool next(Run& run);
+
+   private:
+    double exit(int a) const;  // where the ray leaves the current cell through its face on axis a
+    const EmptySpace& space_;
+    const Ray& ray_;
+    double t_max_;
+    int cell_[3], step_[3];
+    double leave_[3];
+    bool done_ = false;
+  };
+
  private:
   const MacroCells& cells_;
   std::vector<std::uint8_t> empty_;
@@ -59,25 +79,21 @@ class EmptySpace {
 // until visit returns false; with no `space`, once for the whole of iv. The
 // runs and the leaps between them partition iv: an integrator that walks the
 // parts adds what it would add walking iv wherever the empty runs add
-// nothing. Where rounding at a face gives a run no length, the rest of iv
-// is one part (walking empty cells is never wrong, only slower).
+// nothing. Runs of no length (two faces crossed at once) are not visited.
 template <class Visit>
 void for_each_occupied_run(const EmptySpace* space, const Ray& ray, const Interval& iv, Visit&& visit) {
   if (!space) {
     visit(iv);
     return;
   }
-  for (double t = iv.t0; t < iv.t1;) {
-    const EmptySpace::Run run = space->run(ray, t, iv.t1);
-    const bool stuck = !(run.t_end > t);
-    if (!run.empty || stuck) {
-      Interval part = iv;
-      part.t0 = t;
-      part.t1 = stuck ? iv.t1 : run.t_end;
-      if (!visit(part)) return;
-      if (stuck) return;
-    }
-    t = run.t_end;
+  EmptySpace::Walk walk(*space, ray, iv.t0, iv.t1);
+  EmptySpace::Run run;
+  for (double t = iv.t0; t < iv.t1 && walk.next(run); t = run.t_end) {
+    if (run.empty || !(run.t_end > t)) continue;
+    Interval part = iv;
+    part.t0 = t;
+    part.t1 = run.t_end;
+    if (!visit(part)) return;
   }
 }
 

@@ -133,7 +133,15 @@ class GridVolume {
   }
   // The same on the typed samples (visit's span data), for loops that dispatched once.
   template <class T>
-  double sample(const T* values, Vec3 p) const;
+  double sample(const T* values, Vec3 p) const {
+    Vec3 u;
+    for (int a = 0; a < 3; ++a) u[a] = (p[a] - origin_[a]) / spacing_[a];
+    return sample_grid(values, u);
+  }
+  // The same at grid position u (index units: u = (p - origin) / spacing),
+  // for walks that step in it; clamped onto the grid.
+  template <class T>
+  double sample_grid(const T* values, Vec3 u) const;
 
  private:
   GridVolume(std::array<int, 3> dims, std::pair<SampleView, std::shared_ptr<const void>> shared, Vec3 spacing,
@@ -158,11 +166,11 @@ std::array<float, 8> corners_as_float(const T* t, std::size_t sy, std::size_t sz
 }
 
 template <class T>
-double GridVolume::sample(const T* values, Vec3 p) const {
+double GridVolume::sample_grid(const T* values, Vec3 g) const {
   int c[3];
   double f[3];
   for (int a = 0; a < 3; ++a) {
-    const double u = std::clamp((p[a] - origin_[a]) / spacing_[a], 0.0, double(dims_[a] - 1));
+    const double u = std::clamp(g[a], 0.0, double(dims_[a] - 1));
     c[a] = std::min(static_cast<int>(u), dims_[a] - 2);
     f[a] = u - c[a];
   }
