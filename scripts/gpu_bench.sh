@@ -52,10 +52,9 @@ for run in "${runs[@]}"; do
                                       --width 512 --height 512)
   cpu=$(best render "${args[@]}" -o "$tmp/cpu.npy" --threads 2)
   gpu=$(best render "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
-  # Empty-space skipping off (adaptive skips transparent intervals its own way; meshes have none).
+  # Empty-space skipping off (meshes have none).
   march=-1
-  [ "$method" != adaptive ] && [ "$method" != tet-raycast ] &&
-    march=$(best render "${args[@]}" -o "$tmp/march.npy" --backend vulkan --no-skip)
+  [ "$method" != tet-raycast ] && march=$(best render "${args[@]}" -o "$tmp/march.npy" --backend vulkan --no-skip)
   diff=$("$vri" compare "$tmp/gpu.npy" "$tmp/cpu.npy" --tolerance 1e-4 | awk 'NR > 1 { if ($4 > m) m = $4 } END { printf "%.1e", m }')
   awk -v s="$scene" -v m="$method" -v c="$cpu" -v g="$gpu" -v n="$march" -v d="$diff" \
     'BEGIN { printf "| %s | %s | %.1f | %.1f | %.2f | %s | %s |\n", s, m, 1000 * c, 1000 * g, c / g,

@@ -28,7 +28,8 @@ void SceneFlags::add_to(CLI::App* cmd) {
   cmd->add_option("--termination", o.termination,
                   "riemann, preint1, preint2, preint2-dual: stop a ray once its transmittance is below this (0: off)");
   cmd->add_flag("--no-skip", no_skip,
-                "riemann, preint1, preint2, preint2-dual: march through empty space too (the plain path)");
+                "riemann, preint1, preint2, preint2-dual, adaptive: march through empty space too (the plain path; "
+                "adaptive coupled/decoupled: the paper's algorithm as written, without the early stop)");
   cmd->add_flag("--double", double_math,
                 "riemann, preint1, preint2, preint2-dual: sample, look up and composite in double (the reference of "
                 "their float paths)");

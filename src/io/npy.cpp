@@ -43,7 +43,13 @@ class DictReader {
   // the closing quote for a string, else the next ',' or '}'.
   std::string value() {
     skip_space();
-    if (i_ < t_.size() && (t_[i_] == '\'' || t_[i_] == '"')) return "'" + quoted() + "'";
+    if (i_ < t_.size() && (t_[i_] == '\'' || t_[i_] == '"')) {
+      // Appended, not "'" + quoted() + "'": GCC 12 warns falsely (-Wrestrict) on that form.
+      std::string out(1, '\'');
+      out += quoted();
+      out += '\'';
+      return out;
+    }
     const std::size_t begin = i_;
     int depth = 0;
     for (; i_ < t_.size(); ++i_) {
