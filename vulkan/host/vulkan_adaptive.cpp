@@ -1,5 +1,6 @@
 #include "vulkan_adaptive.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -32,14 +33,20 @@ static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
 }  // namespace
 
-VulkanAdaptive::VulkanAdaptive(std::shared_ptr<const VulkanDevice> device, const Scene& scene)
-    : VulkanGridRenderer(std::move(device), scene), tf_(device_, FloatTransferFunction(scene.transfer_function)) {
+const Scene& checked_adaptive(const Scene& scene, double min_tolerance, const std::string& what) {
   const MethodSpec& m = scene.method;
   const AdaptiveParams params{m.tolerance, m.h0, m.hmin, m.hmax, parse_adaptive_strategy(m.strategy)};
   params.validate();
-  if (params.tolerance < kMinTolerance)
-    throw Error("--backend vulkan: adaptive computes in float on the GPU; its tolerance must be at least 1e-5, got " +
-                std::to_string(params.tolerance));
+  if (params.tolerance < min_tolerance)  // (the minima are powers of ten: "1e-5")
+    throw Error("--backend vulkan: " + what + " computes in float on the GPU; its tolerance must be at least 1e" +
+                std::to_string(std::lround(std::log10(min_tolerance))) + ", got " + std::to_string(params.tolerance));
+  return scene;
+}
+
+VulkanAdaptive::VulkanAdaptive(std::shared_ptr<const VulkanDevice> device, const Scene& scene)
+    : VulkanGridRenderer(std::move(device), checked_adaptive(scene, kMinTolerance, "adaptive")),
+      tf_(device_, FloatTransferFunction(scene.transfer_function)) {
+  const MethodSpec& m = scene.method;
   // The CPU's classification (adaptive_simpson.cpp): its runs of non-empty macro cells.
   const detail::Skipping skipping(scene.grid(), ZeroOpacity(scene.transfer_function), m.fast, "adaptive");
   empty_.emplace(device_, scene.grid(), skipping.space());

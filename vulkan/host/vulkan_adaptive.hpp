@@ -10,12 +10,18 @@
 // is vulkan_adaptive_guaranteed.hpp.
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "compute_kernel.hpp"
 #include "gpu_array.hpp"
 #include "vulkan_grid_renderer.hpp"
 
 namespace vri::vulkan {
+
+// `scene`, once its adaptive parameters are valid and its tolerance is at
+// least min_tolerance (the float estimates' floor); else throws vri::Error
+// naming `what`. Called before the volume goes up to the device.
+const Scene& checked_adaptive(const Scene& scene, double min_tolerance, const std::string& what);
 
 class VulkanAdaptive final : public VulkanGridRenderer {
  public:

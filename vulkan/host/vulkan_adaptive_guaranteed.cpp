@@ -6,6 +6,7 @@
 
 #include "pixel_kernel.hpp"
 #include "ray_setup.hpp"
+#include "vulkan_adaptive.hpp"
 #include "vri/core/error.hpp"
 #include "vri/integrators/adaptive_params.hpp"
 #include "vri/integrators/fast_path.hpp"
@@ -48,16 +49,11 @@ VulkanGuaranteedAdaptive::VulkanGuaranteedAdaptive(std::shared_ptr<const VulkanD
 
 VulkanGuaranteedAdaptive::VulkanGuaranteedAdaptive(std::shared_ptr<const VulkanDevice> device, const Scene& scene,
                                                    const FloatTransferFunction& tf)
-    : VulkanGridRenderer(std::move(device), scene),
+    : VulkanGridRenderer(std::move(device), checked_adaptive(scene, kMinTolerance, "adaptive 'guaranteed'")),
       tf_(device_, tf),
       opaque_before_(device_, std::as_bytes(std::span<const std::int32_t>(opaque_before(tf))),
                      "the transfer function's segments") {
   const MethodSpec& m = scene.method;
-  const AdaptiveParams params{m.tolerance, m.h0, m.hmin, m.hmax, parse_adaptive_strategy(m.strategy)};
-  params.validate();
-  if (params.tolerance < kMinTolerance)
-    throw Error("--backend vulkan: adaptive 'guaranteed' computes in float on the GPU; its tolerance must be at "
-                "least 1e-4, got " + std::to_string(params.tolerance));
   const GridVolume& volume = scene.grid();
   margin_ = static_cast<float>(interpolation_margin(volume));
   // The CPU's classification (adaptive_guaranteed.cpp): the macro cells it walks past.
