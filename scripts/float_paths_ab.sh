@@ -37,7 +37,7 @@ for scene in neghip engine bonsai neghip_opaque neghip_spike .ab_neghip_lit_samp
         fi
       done
     done
-    diff=$(/usr/bin/python3 -c "import numpy as n; a=n.load('$tmp/double.npy'); b=n.load('$tmp/float.npy'); print('%.1e' % abs(a.astype(float)-b).max())")
+    diff=$(/usr/bin/python3 tools/npy_diff.py "$tmp/double.npy" "$tmp/float.npy")
     label=${scene#.ab_}
     if [ "$label" != "$scene" ]; then label="${label%_sampled} (sampled)"
     elif [ "${scene%_lit}" != "$scene" ]; then label="$scene (interpolated)"; fi

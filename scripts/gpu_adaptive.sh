@@ -19,10 +19,10 @@ render() {  # vri render ARGS, its report kept out of the table (shown on failur
   "$vri" render "$@" 2> "$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
 }
 largest() {  # the largest difference between A and B (.npy) in any channel
-  /usr/bin/python3 -c "import numpy as n, sys; a = n.load(sys.argv[1]).astype(float); b = n.load(sys.argv[2]); print('%.1e' % abs(a - b).max())" "$@"
+  /usr/bin/python3 tools/npy_diff.py "$1" "$2"
 }
 share() {  # share of pixels of A and B (.npy) differing by more than E in some channel
-  /usr/bin/python3 -c "import numpy as n, sys; a = n.load(sys.argv[1]).astype(float); b = n.load(sys.argv[2]); print('%.2f%%' % (100 * (abs(a - b).max(-1) > float(sys.argv[3])).mean()))" "$@"
+  /usr/bin/python3 tools/npy_diff.py "$1" "$2" --over "$3"
 }
 for scene in scenes/*.json; do
   name=$(basename "$scene" .json)

@@ -71,7 +71,7 @@ for spec in "first order 256², sliced (Roettger & Ertl)|--size 256 --builder sl
   args=(--tf presets/bonsai.json "${args[@]}")
   cpu=$(best table "${args[@]}" -o "$tmp/cpu.npy")
   gpu=$(best table "${args[@]}" -o "$tmp/gpu.npy" --backend vulkan)
-  diff=$(/usr/bin/python3 -c "import numpy as n; print('%.1e' % abs(n.load('$tmp/cpu.npy').astype(float) - n.load('$tmp/gpu.npy')).max())")
+  diff=$(/usr/bin/python3 tools/npy_diff.py "$tmp/cpu.npy" "$tmp/gpu.npy")
   awk -v s="$name" -v c="$cpu" -v g="$gpu" -v d="$diff" \
     'BEGIN { printf "| %s | %.3f | %.3f | %.2f | %s |\n", s, c, g, c / g, d }'
 done

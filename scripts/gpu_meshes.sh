@@ -34,7 +34,7 @@ for file in scenes/blunt_fin*.json; do
     flags=(--method tet-raycast --width 128 --height 128)
     cpu=$(render "$scene" "${flags[@]}" -o "$tmp/cpu.npy")
     gpu=$(render "$scene" "${flags[@]}" --backend vulkan -o "$tmp/gpu.npy")
-    diff=$(/usr/bin/python3 -c "import numpy as n; print('%.1e' % abs(n.load('$tmp/cpu.npy').astype(float) - n.load('$tmp/gpu.npy')).max())")
+    diff=$(/usr/bin/python3 tools/npy_diff.py "$tmp/cpu.npy" "$tmp/gpu.npy")
     echo "| $name | $mode | $diff | $cpu | $gpu |"
   done
 done

@@ -19,6 +19,6 @@ for name in neghip fuel bonsai engine neghip_lit fuel_lit; do
   med() { echo "$out" | awk -v k="$1" '$0 ~ "^"k { print $(NF-1) }'; }
   "$build/vri" render "scenes/$name.json" -o "$tmp/noskip.npy" --method preint2-dual --no-skip > /dev/null 2>&1
   same=no; cmp -s "$tmp/fast.npy" "$tmp/noskip.npy" && same=yes
-  diff=$(/usr/bin/python3 -c "import numpy as n; print('%.1e' % abs(n.load('$tmp/fast.npy').astype(float) - n.load('$tmp/plain.npy')).max())")
+  diff=$(/usr/bin/python3 tools/npy_diff.py "$tmp/fast.npy" "$tmp/plain.npy")
   echo "| $name | $(med 'A wall s') | $(med 'B wall s') | $(med 'A/B wall') | $(med 'A/B cpu') | $same | $diff |"
 done

@@ -32,7 +32,7 @@ for name in neghip engine bonsai neghip_opaque neghip_spike neghip_lit; do
     done
     read -r pw pc <"$tmp/plain.best"; read -r sw sc <"$tmp/skip.best"; read -r tw tc <"$tmp/term.best"
     same=no; cmp -s "$tmp/skip.npy" "$tmp/plain.npy" && same=yes
-    change=$(/usr/bin/python3 -c "import numpy as n; print('%.1e' % abs(n.load('$tmp/term.npy').astype(float) - n.load('$tmp/plain.npy')).max())")
+    change=$(/usr/bin/python3 tools/npy_diff.py "$tmp/term.npy" "$tmp/plain.npy")
     echo "| $name | $method | $pw / $pc | $sw / $sc | $(python3 -c "print('%.2f' % ($pc / $sc))") | $same | $tw / $tc | $(python3 -c "print('%.2f' % ($pc / $tc))") | $change |"
   done
 done
