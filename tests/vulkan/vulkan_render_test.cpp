@@ -81,9 +81,11 @@ TEST_P(VulkanScene, Preint2DualMatchesTheCpuFloatPath) { expect_preint_matches("
 
 // adaptive (coupled, decoupled) takes its step decisions on float error
 // estimates, the CPU on double ones: a decision can flip where an estimate
-// sits on the tolerance, so the images are held to agree on all but 1% of
-// pixels (to 1e-4) and to have the CPU's error against `exact`: the share of
-// pixels over the tolerance within 1% of the CPU's.
+// sits on the tolerance, so the images are held to agree on all but 0.5% of
+// pixels (to 1e-4; at most 0.16% on the bundled scenes, with the CPU's runs
+// of non-empty macro cells and early stop) and to have the CPU's error
+// against `exact`: the share of pixels over the tolerance within 1% of the
+// CPU's.
 TEST_P(VulkanScene, AdaptiveFollowsTheCpu) {
   Scene scene = scene_with("adaptive");
   Scene exact = scene_with("exact");
@@ -94,7 +96,7 @@ TEST_P(VulkanScene, AdaptiveFollowsTheCpu) {
     scene.method.tolerance = tolerance;
     const Image cpu = SceneRenderer(scene).render({.threads = 2});
     const Image gpu = SceneRenderer(scene, Backend::Vulkan).render({.threads = 2});
-    EXPECT_LE(test::share_over(gpu, cpu, 1e-4), 0.01) << strategy;
+    EXPECT_LE(test::share_over(gpu, cpu, 1e-4), 0.005) << strategy;
     EXPECT_NEAR(test::share_over(gpu, reference, tolerance), test::share_over(cpu, reference, tolerance), 0.01)
         << strategy;
   }
