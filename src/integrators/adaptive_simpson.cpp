@@ -63,11 +63,9 @@ Rgba AdaptiveSimpsonIntegrator::integrate_typed(const Value* values, const Ray& 
   if (!iv) return {0, 0, 0, 0};
   SampleCache cache;
   // The ray in grid coordinates, u(t) = u0 + t du: no division per sample.
-  Vec3 u0, du;
-  for (int a = 0; a < 3; ++a) {
-    u0[a] = (ray.origin[a] - volume_.origin()[a]) / volume_.spacing()[a];
-    du[a] = ray.dir[a] / volume_.spacing()[a];
-  }
+  const Vec3 u0 = volume_.grid_position(ray.origin);
+  Vec3 du;
+  for (int a = 0; a < 3; ++a) du[a] = ray.dir[a] / volume_.spacing()[a];
   auto eval = [&](double t) {
     ++stats.evaluations;
     const TfSample v = tf_(volume_.sample_grid(values, u0 + t * du));

@@ -8,6 +8,17 @@
 
 namespace vri {
 
+namespace {
+
+// The macro cell of the grid cell that GridVolume::sample reads at world point p.
+std::array<int, 3> macro_cell_at(const GridVolume& v, Vec3 p) {
+  std::array<int, 3> m = v.cell_at(v.grid_position(p)).index;
+  for (int& i : m) i /= MacroCells::kCells;
+  return m;
+}
+
+}  // namespace
+
 double interpolation_margin(const GridVolume& v) {
   const double largest = std::max(std::abs(double(v.min_value())), std::abs(double(v.max_value())));
   return 1e-5 * (double(v.max_value()) - v.min_value() + largest);
@@ -26,15 +37,11 @@ std::size_t EmptySpace::empty_count() const {
 
 EmptySpace::Run EmptySpace::run(const Ray& ray, double t, double t_max) const {
   const GridVolume& v = cells_.volume();
-  const auto& n = v.dims();
   const auto& m = cells_.dims();
-  const Vec3 p = ray.at(t);
-  int cell[3], step[3];
+  std::array<int, 3> cell = macro_cell_at(v, ray.at(t));
+  int step[3];
   double width[3], inverse[3];  // macro cell width, world units; 1 / ray direction
   for (int a = 0; a < 3; ++a) {
-    // The grid cell that GridVolume::sample interpolates in, and its macro cell.
-    const double u = std::clamp((p[a] - v.origin()[a]) / v.spacing()[a], 0.0, double(n[a] - 1));
-    cell[a] = std::min(static_cast<int>(u), n[a] - 2) / MacroCells::kCells;
     step[a] = ray.dir[a] > 0 ? 1 : ray.dir[a] < 0 ? -1 : 0;
     width[a] = MacroCells::kCells * v.spacing()[a];
     inverse[a] = step[a] != 0 ? 1 / ray.dir[a] : 0;
@@ -78,15 +85,8 @@ EmptySpace::Run EmptySpace::run(const Ray& ray, double t, double t_max) const {
 }
 
 EmptySpace::Walk::Walk(const EmptySpace& space, const Ray& ray, double t, double t_max)
-    : space_(space), ray_(ray), t_max_(t_max) {
-  const GridVolume& v = space.cells_.volume();
-  const auto& n = v.dims();
-  const Vec3 p = ray.at(t);
-  for (int a = 0; a < 3; ++a) {
-    const double u = std::clamp((p[a] - v.origin()[a]) / v.spacing()[a], 0.0, double(n[a] - 1));
-    cell_[a] = std::min(static_cast<int>(u), n[a] - 2) / MacroCells::kCells;
-    step_[a] = ray.dir[a] > 0 ? 1 : ray.dir[a] < 0 ? -1 : 0;
-  }
+    : space_(space), ray_(ray), t_max_(t_max), cell_(macro_cell_at(space.cells_.volume(), ray.at(t))) {
+  for (int a = 0; a < 3; ++a) step_[a] = ray.dir[a] > 0 ? 1 : ray.dir[a] < 0 ? -1 : 0;
   for (int a = 0; a < 3; ++a) leave_[a] = exit(a);
 }
 

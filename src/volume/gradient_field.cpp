@@ -52,14 +52,9 @@ std::array<double, 8> GradientField::cell_corners(int axis, std::array<int, 3> c
 }
 
 Vec3 GradientField::sample(Vec3 p) const {
-  const auto& n = volume_.dims();
-  std::array<int, 3> c;
-  double f[3];
-  for (int a = 0; a < 3; ++a) {
-    const double u = std::clamp((p[a] - volume_.origin()[a]) / volume_.spacing()[a], 0.0, double(n[a] - 1));
-    c[a] = std::min(static_cast<int>(u), n[a] - 2);
-    f[a] = u - c[a];
-  }
+  const GridVolume::GridCell cell = volume_.cell_at(volume_.grid_position(p));
+  const std::array<int, 3>& c = cell.index;
+  const auto& f = cell.f;
   Vec3 out;
   for (int a = 0; a < 3; ++a) {
     const auto v = cell_corners(a, c);

@@ -19,6 +19,7 @@
 //   run's ranges then lies far enough inside one run of zero table scalars
 //   that the parabola through any three of its scalars stays in that run.
 // Classifying is O(macro cells) and takes milliseconds (bench_macro_cells).
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -64,7 +65,8 @@ class EmptySpace {
     const EmptySpace& space_;
     const Ray& ray_;
     double t_max_;
-    int cell_[3], step_[3];
+    std::array<int, 3> cell_;
+    int step_[3];
     double leave_[3];
     bool done_ = false;
   };

@@ -134,14 +134,33 @@ class GridVolume {
   // The same on the typed samples (visit's span data), for loops that dispatched once.
   template <class T>
   double sample(const T* values, Vec3 p) const {
-    Vec3 u;
-    for (int a = 0; a < 3; ++a) u[a] = (p[a] - origin_[a]) / spacing_[a];
-    return sample_grid(values, u);
+    return sample_grid(values, grid_position(p));
   }
-  // The same at grid position u (index units: u = (p - origin) / spacing),
-  // for walks that step in it; clamped onto the grid.
+  // The same at grid position u (index units: grid_position), for walks
+  // that step in it; clamped onto the grid.
   template <class T>
   double sample_grid(const T* values, Vec3 u) const;
+
+  // Index units of a world point: (p - origin) / spacing.
+  Vec3 grid_position(Vec3 p) const {
+    return {(p.x - origin_.x) / spacing_.x, (p.y - origin_.y) / spacing_.y, (p.z - origin_.z) / spacing_.z};
+  }
+  // The cell that trilinear interpolation at grid position u reads (u
+  // clamped onto the grid; the last cell on the upper faces), and u's
+  // fractions in it.
+  struct GridCell {
+    std::array<int, 3> index;
+    double f[3];
+  };
+  GridCell cell_at(Vec3 u) const {
+    GridCell c;
+    for (int a = 0; a < 3; ++a) {
+      const double v = std::clamp(u[a], 0.0, double(dims_[a] - 1));
+      c.index[a] = std::min(static_cast<int>(v), dims_[a] - 2);
+      c.f[a] = v - c.index[a];
+    }
+    return c;
+  }
 
  private:
   GridVolume(std::array<int, 3> dims, std::pair<SampleView, std::shared_ptr<const void>> shared, Vec3 spacing,
@@ -166,14 +185,10 @@ std::array<float, 8> corners_as_float(const T* t, std::size_t sy, std::size_t sz
 }
 
 template <class T>
-double GridVolume::sample_grid(const T* values, Vec3 g) const {
-  int c[3];
-  double f[3];
-  for (int a = 0; a < 3; ++a) {
-    const double u = std::clamp(g[a], 0.0, double(dims_[a] - 1));
-    c[a] = std::min(static_cast<int>(u), dims_[a] - 2);
-    f[a] = u - c[a];
-  }
+double GridVolume::sample_grid(const T* values, Vec3 u) const {
+  const GridCell cell = cell_at(u);
+  const auto& c = cell.index;
+  const auto& f = cell.f;
   const std::size_t sy = dims_[0], sz = std::size_t(dims_[0]) * dims_[1];
   const auto v = corners_as_float(values + index(c[0], c[1], c[2]), sy, sz);  // differences below in float
   const double c00 = v[0] + f[0] * (v[1] - v[0]);
