@@ -21,7 +21,9 @@ struct MacroWalk {
   bool done;
 };
 
-DF macro_exit(MacroWalk w, int a) {
+// Where the ray leaves the walk's macro cell through its face on axis a
+// (empty_space.glsl's macro_exit is the marchers' sample parameter short of it).
+DF walk_exit(MacroWalk w, int a) {
   if (w.step[a] == 0) return DF(3.0e38, 0.0);
   return crossing(a, float((w.m[a] + (w.step[a] > 0 ? 1 : 0)) * kMacroCells));
 }
@@ -32,7 +34,7 @@ MacroWalk macro_walk_start() {
     w.m[a] = int(clamp(df_floor(u0[a]), 0.0, float(p.last_cell[a]))) / kMacroCells;
     w.step[a] = du[a].hi > 0.0 ? 1 : (du[a].hi < 0.0 ? -1 : 0);
   }
-  for (int a = 0; a < 3; ++a) w.leave[a] = macro_exit(w, a);
+  for (int a = 0; a < 3; ++a) w.leave[a] = walk_exit(w, a);
   w.done = false;
   return w;
 }
@@ -57,7 +59,7 @@ bool macro_next(inout MacroWalk w, DF t_max, out MacroRun run) {
       w.done = true;
       return true;
     }
-    w.leave[a] = macro_exit(w, a);
+    w.leave[a] = walk_exit(w, a);
     if (macro_bit(w.m) != run.empty) {
       run.t_end = leave;
       return true;
