@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "float_march.hpp"
@@ -26,15 +27,19 @@ namespace vri::detail {
 class SegmentSkip {
  public:
   SegmentSkip(const Leap& leap, const Ray& ray, double t_max) : leap_(leap), ray_(ray), t_max_(t_max) {}
-  bool skipped(const CellSegment& seg) {
+  bool skipped(const CellSegment& seg) { return skipped(seg.ta, seg.tb); }
+  bool skipped(double ta, double tb) {
     if (!leap_.space) return false;
-    if (seg.ta >= t_check_) {
-      const EmptySpace::Run run = leap_.space->run(ray_, seg.ta, t_max_);
+    if (ta >= t_check_) {
+      const EmptySpace::Run run = leap_.space->run(ray_, ta, t_max_);
       t_check_ = run.t_end;
       empty_until_ = run.empty ? run.t_end : -kInf;
     }
-    return seg.tb <= empty_until_;
+    return tb <= empty_until_;
   }
+  // The end of the last run found, if empty (else -inf): every segment that
+  // ends by it is skipped.
+  double empty_until() const { return empty_until_; }
 
  private:
   static constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -56,6 +61,12 @@ class DualFloatLookup {
       slices_.emplace_back(full.slices()[i]);
       weighted_.push_back({middle ? middle->slices()[i].data() : nullptr, back ? back->slices()[i].data() : nullptr});
     }
+    // Every slice is built on the one discrete transfer function: one axis,
+    // which the packets (march_dual_packet) place their samples on once.
+    for (const SecondOrderFloatLookup& slice : slices_)
+      if (slice.axis().lo() != slices_[0].axis().lo() || slice.axis().scale() != slices_[0].axis().scale() ||
+          slice.size() != slices_[0].size())
+        throw std::logic_error("DualFloatLookup: slices on different scalar axes");
   }
   struct Spot {
     int i;  // slices i and i + 1
@@ -67,6 +78,12 @@ class DualFloatLookup {
     const std::array<FloatAxis::Place, 3> p = {slices_[l.i].place(s_f), slices_[l.i].place(s_m), slices_[l.i].place(s_b)};
     return {l.i, static_cast<float>(l.w), slices_[l.i].find(p), slices_[l.i + 1].find(p)};
   }
+  // What `find` reads, for the ray packets (float_packet_dual.cpp).
+  int lengths() const { return static_cast<int>(slices_.size()); }
+  const SecondOrderFloatLookup& slice(int i) const { return slices_[i]; }
+  // Slice i of table k (0 the unweighted one, 1 middle, 2 back), all in slice i's layout.
+  const float* data(int i, int k) const { return k == 0 ? slices_[i].data() : weighted_[i][k - 1]; }
+  double max_length() const { return max_length_; }
   // Table k: 0 the unweighted (full) one, 1 middle, 2 back.
   Float4 blend(const Spot& spot, int k = 0) const {
     const auto one = [&](int slice, const SecondOrderFloatLookup::Spot& at) {

@@ -141,7 +141,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
         mean[c] = _mm256_mul_ps(mean[c], _mm256_set1_ps(1.0f / (steps + 1)));
       }
       terms8(*lighting.shading, mean, d, a, b);
-      for (int c = 0; c < 3; ++c) v[c] = _mm256_add_ps(_mm256_mul_ps(v[c], a), _mm256_mul_ps(b, v[3]));
+      lit_by8(a, b, v);
     } else {
       lit_interpolated8(table, lighting, L, v);
     }

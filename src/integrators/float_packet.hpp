@@ -1,5 +1,6 @@
 #pragma once
-// Packets of rays for the float paths of riemann, preint1 and preint2, unlit and lit (issue 8;
+// Packets of rays for the float paths of riemann, preint1, preint2 and preint2-dual, unlit and
+// lit (issues 8 and 21;
 // docs/PERFORMANCE.md, "Float paths and packets"): kPacket neighbouring rays
 // marched together with AVX2, one ray a lane. Each lane keeps its own sample
 // positions u0 + i du, leaps (its own macro-cell queries) and partial last
@@ -24,6 +25,8 @@ namespace vri::detail {
 
 inline constexpr int kPacket = 8;
 
+class DualFloatLookup;  // dual_march.hpp
+
 // True where the build has the AVX2 packets (src/core/simd.hpp) and the CPU
 // has AVX2; else every march_*_packet is the scalar march, ray by ray.
 bool packets_available();
@@ -39,6 +42,10 @@ void march_preint1_packet(const GridVolume& volume, const FloatSampler& sampler,
 void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler, const SecondOrderFloatLookup& table,
                           const DiscreteTf& tf, const FloatLighting& lighting, const Ray* rays, double h,
                           const Leap& leap, Rgba* out);
+// out[i] = march_cells_float(..., table, shading, interpolated, rays[i], leap)
+// for i < kPacket: preint2-dual's float path (dual_march.hpp, float_packet_dual.cpp).
+void march_dual_packet(const GridVolume& volume, const DualFloatLookup& table, const FloatShading* shading,
+                       bool interpolated, const Ray* rays, const Leap& leap, Rgba* out);
 // out[i] = march_riemann_float(..., rays[i], ...) for i < kPacket (float_riemann.hpp).
 // `shading`: null unlit (float_shading.hpp).
 void march_riemann_packet(const GridVolume& volume, const FloatSampler& sampler, const FloatTransferFunction& tf,

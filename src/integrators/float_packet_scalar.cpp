@@ -4,6 +4,7 @@
 // march of each ray, which is what the packets' contract promises.
 #include "core/simd.hpp"
 #if !VRI_HAVE_AVX2_PACKETS
+#include "dual_march.hpp"
 #include "float_packet.hpp"
 #include "float_riemann.hpp"
 
@@ -28,6 +29,14 @@ void march_preint2_packet(const GridVolume& volume, const FloatSampler& sampler,
   volume.visit([&](auto values) {
     for (int l = 0; l < kPacket; ++l)
       out[l] = march_float(volume, sampler, values.data(), table, tf, lighting, rays[l], h, leap);
+  });
+}
+
+void march_dual_packet(const GridVolume& volume, const DualFloatLookup& table, const FloatShading* shading,
+                       bool interpolated, const Ray* rays, const Leap& leap, Rgba* out) {
+  volume.visit([&](auto values) {
+    for (int l = 0; l < kPacket; ++l)
+      out[l] = march_cells_float(volume, values.data(), table, shading, interpolated, rays[l], leap);
   });
 }
 

@@ -92,27 +92,30 @@ VRI_AVX2 void cell_axis(const double* u0, const double* du, __m256i k, double to
 
 VRI_AVX2 __m256 lerp(__m256 a, __m256 b, __m256 f) { return _mm256_add_ps(a, _mm256_mul_ps(f, _mm256_sub_ps(b, a))); }
 
-// base[index] and base[index + 1] of the 8 lanes, interpolated at f: each
-// pair of neighbouring floats read as one 8-byte element (two 4-element
-// gathers instead of two 8-element ones), then split into the two vectors.
 VRI_AVX2 __m256 load(const float* p) { return _mm256_load_ps(p); }
 VRI_AVX2 __m256i load(const int* p) { return _mm256_load_si256(reinterpret_cast<const __m256i*>(p)); }
 VRI_AVX2 void store(float* p, __m256 v) { _mm256_store_ps(p, v); }
 VRI_AVX2 void store(int* p, __m256i v) { _mm256_store_si256(reinterpret_cast<__m256i*>(p), v); }
 VRI_AVX2 unsigned mask(__m256i m) { return static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(m))); }
 
-// The 4-float table entries data + entry[l] + add of the 8 lanes, as 4
-// vectors (r, g, b, alpha) of 8 lanes: lanes l and l + 4 loaded into one
-// register, then transposed 4 by 4 in each half.
-VRI_AVX2 void corner(const float* data, const int* entry, int add, __m256 channel[4]) {
+// The 4-float table entries at[l] + add of the 8 lanes, as 4 vectors (r, g,
+// b, alpha) of 8 lanes: lanes l and l + 4 loaded into one register, then
+// transposed 4 by 4 in each half.
+VRI_AVX2 void corner(const float* const* at, int add, __m256 channel[4]) {
   __m256 q[4];
-  for (int l = 0; l < 4; ++l) q[l] = _mm256_loadu2_m128(data + entry[l + 4] + add, data + entry[l] + add);
+  for (int l = 0; l < 4; ++l) q[l] = _mm256_loadu2_m128(at[l + 4] + add, at[l] + add);
   const __m256 t0 = _mm256_unpacklo_ps(q[0], q[1]), t1 = _mm256_unpackhi_ps(q[0], q[1]);
   const __m256 t2 = _mm256_unpacklo_ps(q[2], q[3]), t3 = _mm256_unpackhi_ps(q[2], q[3]);
   channel[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
   channel[1] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
   channel[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
   channel[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+}
+// The same for entries data + entry[l] + add of one table.
+VRI_AVX2 void corner(const float* data, const int* entry, int add, __m256 channel[4]) {
+  const float* at[kPacket];
+  for (int l = 0; l < kPacket; ++l) at[l] = data + entry[l];
+  corner(at, add, channel);
 }
 
 // Lanes 0 1 4 5 2 3 6 7 (what shuffle_ps leaves) back in order.
@@ -140,24 +143,26 @@ VRI_AVX2 Pair pair(const T* base, int i) {
   return p;
 }
 
-VRI_AVX2 __m256 lerp_pair(const float* base, const int* index, __m256 f) {
-  const __m256 lo = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[2], index[3]), pairs(base, index[0], index[1])));
-  const __m256 hi = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[6], index[7]), pairs(base, index[4], index[5])));
-  return lerp(order(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0))),
-              order(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(3, 1, 3, 1))), f);
+// The 8 lanes' neighbouring samples base[index[l]] and base[index[l] + 1],
+// in float (exactly, as the scalar path converts them), as vectors lo and hi:
+// each pair of floats read as one 8-byte element, then split.
+VRI_AVX2 void pair8(const float* base, const int* index, __m256& lo, __m256& hi) {
+  const __m256 a = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[2], index[3]), pairs(base, index[0], index[1])));
+  const __m256 b = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[6], index[7]), pairs(base, index[4], index[5])));
+  lo = order(_mm256_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 2, 0)));
+  hi = order(_mm256_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1)));
 }
 
-// The same for 1- and 2-byte samples: each lane's pair in one 32-bit lane,
-// split into base[i] and base[i + 1] and converted to float (exactly, as the
-// scalar path converts them).
-VRI_AVX2 __m256 lerp_pair(const std::uint8_t* base, const int* index, __m256 f) {
+// 1- and 2-byte samples: each lane's pair in one 32-bit lane, split into
+// base[i] and base[i + 1].
+VRI_AVX2 void pair8(const std::uint8_t* base, const int* index, __m256& lo, __m256& hi) {
   const __m256i p = _mm256_cvtepu16_epi32(_mm_setr_epi16(
       static_cast<short>(pair<std::uint16_t>(base, index[0])), static_cast<short>(pair<std::uint16_t>(base, index[1])),
       static_cast<short>(pair<std::uint16_t>(base, index[2])), static_cast<short>(pair<std::uint16_t>(base, index[3])),
       static_cast<short>(pair<std::uint16_t>(base, index[4])), static_cast<short>(pair<std::uint16_t>(base, index[5])),
       static_cast<short>(pair<std::uint16_t>(base, index[6])), static_cast<short>(pair<std::uint16_t>(base, index[7]))));
-  return lerp(_mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xff))),
-              _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 8)), f);
+  lo = _mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xff)));
+  hi = _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 8));
 }
 
 template <class T>
@@ -169,16 +174,24 @@ VRI_AVX2 __m256i pairs16(const T* base, const int* index) {
       static_cast<int>(pair<std::uint32_t>(base, index[6])), static_cast<int>(pair<std::uint32_t>(base, index[7])));
 }
 
-VRI_AVX2 __m256 lerp_pair(const std::uint16_t* base, const int* index, __m256 f) {
+VRI_AVX2 void pair8(const std::uint16_t* base, const int* index, __m256& lo, __m256& hi) {
   const __m256i p = pairs16(base, index);
-  return lerp(_mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xffff))),
-              _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 16)), f);
+  lo = _mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xffff)));
+  hi = _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 16));
 }
 
-VRI_AVX2 __m256 lerp_pair(const std::int16_t* base, const int* index, __m256 f) {
+VRI_AVX2 void pair8(const std::int16_t* base, const int* index, __m256& lo, __m256& hi) {
   const __m256i p = pairs16(base, index);  // sign-extended by the arithmetic shifts
-  return lerp(_mm256_cvtepi32_ps(_mm256_srai_epi32(_mm256_slli_epi32(p, 16), 16)),
-              _mm256_cvtepi32_ps(_mm256_srai_epi32(p, 16)), f);
+  lo = _mm256_cvtepi32_ps(_mm256_srai_epi32(_mm256_slli_epi32(p, 16), 16));
+  hi = _mm256_cvtepi32_ps(_mm256_srai_epi32(p, 16));
+}
+
+// base[index] and base[index + 1] of the 8 lanes, interpolated at f.
+template <class T>
+VRI_AVX2 __m256 lerp_pair(const T* base, const int* index, __m256 f) {
+  __m256 lo, hi;
+  pair8(base, index, lo, hi);
+  return lerp(lo, hi, f);
 }
 
 // FloatSampler::cell of the 8 lanes' samples k: each lane's first corner
@@ -259,18 +272,24 @@ VRI_AVX2 void blend8(const FloatLookup& table, const float* data, const Lanes<1>
   const __m256 wf = load(L.w[0]), wb = load(L.w[1]);
   for (int c = 0; c < 4; ++c) v[c] = lerp(lerp(e00[c], e01[c], wb), lerp(e10[c], e11[c], wb), wf);
 }
-VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const float* data, const Lanes<2>& L, __m256 v[4]) {
-  const int row = static_cast<int>(table.row()), plane = static_cast<int>(table.plane());
-  const __m256 wf = load(L.w[0]), wm = load(L.w[1]), wb = load(L.w[2]);
+// SecondOrderFloatLookup::blend of the 8 lanes' entries at[l] (row and plane:
+// the table's strides), weights wf, wm, wb.
+VRI_AVX2 void blend8(const float* const* at, int row, int plane, __m256 wf, __m256 wm, __m256 wb, __m256 v[4]) {
   __m256 c[2][2][4];  // along s_b at (f, m), f and m each 0 or 1
   for (int f = 0; f < 2; ++f)
     for (int m = 0; m < 2; ++m) {
       __m256 lo[4], hi[4];
-      corner(data, L.entry, f * plane + m * row, lo);
-      corner(data, L.entry, f * plane + m * row + 4, hi);
+      corner(at, f * plane + m * row, lo);
+      corner(at, f * plane + m * row + 4, hi);
       for (int ch = 0; ch < 4; ++ch) c[f][m][ch] = lerp(lo[ch], hi[ch], wb);
     }
   for (int ch = 0; ch < 4; ++ch) v[ch] = lerp(lerp(c[0][0][ch], c[0][1][ch], wm), lerp(c[1][0][ch], c[1][1][ch], wm), wf);
+}
+VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const float* data, const Lanes<2>& L, __m256 v[4]) {
+  const float* at[kPacket];
+  for (int l = 0; l < kPacket; ++l) at[l] = data + L.entry[l];
+  blend8(at, static_cast<int>(table.row()), static_cast<int>(table.plane()), load(L.w[0]), load(L.w[1]), load(L.w[2]),
+         v);
 }
 
 // exp_neg (float_math.hpp) on 8 lanes, the same operations in the same order.
@@ -355,24 +374,34 @@ VRI_AVX2 void lit_interpolated8(const FloatLookup& table, const FloatLighting& l
     v[c] = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(fa, front[c]), _mm256_mul_ps(ba, back[c])), specular);
   v[3] = front[3];
 }
+// lit_lagrange of 8 lanes: the full, middle and back tables' entries and the
+// three samples' shading terms (a[j], b[j]).
+VRI_AVX2 void lagrange8(const __m256 full[4], const __m256 middle[4], const __m256 back[4], const __m256 a[3],
+                        const __m256 b[3], __m256 v[4]) {
+  const __m256 s_f = _mm256_sub_ps(_mm256_sub_ps(full[3], middle[3]), back[3]);
+  const __m256 specular = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(b[0], s_f), _mm256_mul_ps(b[1], middle[3])),
+                                        _mm256_mul_ps(b[2], back[3]));
+  for (int c = 0; c < 3; ++c) {
+    const __m256 d_f = _mm256_sub_ps(_mm256_sub_ps(full[c], middle[c]), back[c]);
+    v[c] = _mm256_add_ps(_mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a[0], d_f), _mm256_mul_ps(a[1], middle[c])),
+                                       _mm256_mul_ps(a[2], back[c])),
+                         specular);
+  }
+  v[3] = full[3];
+}
 VRI_AVX2 void lit_interpolated8(const SecondOrderFloatLookup& table, const FloatLighting& lighting,
                                 const Lanes<2>& L, __m256 v[4]) {
   __m256 full[4], middle[4], back[4];
   blend8(table, lighting.weighted[0], L, full);
   blend8(table, lighting.weighted[1], L, middle);
   blend8(table, lighting.weighted[2], L, back);
-  const __m256 s_f = _mm256_sub_ps(_mm256_sub_ps(full[3], middle[3]), back[3]);
-  const __m256 specular = _mm256_add_ps(
-      _mm256_add_ps(_mm256_mul_ps(load(L.tb[0]), s_f), _mm256_mul_ps(load(L.tb[1]), middle[3])),
-      _mm256_mul_ps(load(L.tb[2]), back[3]));
-  for (int c = 0; c < 3; ++c) {
-    const __m256 d_f = _mm256_sub_ps(_mm256_sub_ps(full[c], middle[c]), back[c]);
-    v[c] = _mm256_add_ps(_mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(load(L.ta[0]), d_f),
-                                                     _mm256_mul_ps(load(L.ta[1]), middle[c])),
-                                       _mm256_mul_ps(load(L.ta[2]), back[c])),
-                         specular);
-  }
-  v[3] = full[3];
+  const __m256 a[3] = {load(L.ta[0]), load(L.ta[1]), load(L.ta[2])}, b[3] = {load(L.tb[0]), load(L.tb[1]), load(L.tb[2])};
+  lagrange8(full, middle, back, a, b, v);
+}
+
+// lit_by of 8 lanes: the colour v lit by the terms (a, b).
+VRI_AVX2 void lit_by8(__m256 a, __m256 b, __m256 v[4]) {
+  for (int c = 0; c < 3; ++c) v[c] = _mm256_add_ps(_mm256_mul_ps(v[c], a), _mm256_mul_ps(b, v[3]));
 }
 
 // A lit sample's state: its gradient (`sampled`) or its shading terms

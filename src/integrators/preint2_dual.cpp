@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "dual_march.hpp"
+#include "float_packet.hpp"
 #include "slab_policies.hpp"
 #include "ray_steps.hpp"
 #include "vri/core/error.hpp"
@@ -79,6 +80,7 @@ Preint2DualIntegrator::Preint2DualIntegrator(const GridVolume& volume, const Tra
   else
     float_table_ = std::make_unique<detail::DualFloatLookup>(*table_);
   if (shader_) float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
+  packets_ = detail::packets_fit(volume);  // (the float path: past the return above)
 }
 
 Preint2DualIntegrator::~Preint2DualIntegrator() = default;
@@ -111,6 +113,17 @@ Rgba Preint2DualIntegrator::integrate(const Ray& ray) const {
   return march_cells(
       volume_, ray, leap, [](Vec3) { return Nothing{}; },
       [&](const auto& f, const auto& m, const auto& b, double l) { return table_->lookup(l, f.s, m.s, b.s); });
+}
+
+void Preint2DualIntegrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
+  int i = 0;
+  if (packets_) {
+    const detail::Leap leap{fast_.space(), fast_.termination(), fast_.zero()};
+    for (; i + detail::kPacket <= n; i += detail::kPacket)
+      detail::march_dual_packet(volume_, *float_table_, float_shading_.get(), weighted_.has_value(), rays + i, leap,
+                                out + i);
+  }
+  for (; i < n; ++i) out[i] = integrate(rays[i]);
 }
 
 }  // namespace vri

@@ -162,8 +162,10 @@ TEST(FastPath, SkippingChangesNoBitOnRandomTransferFunctionsAndAlignedRays) {
         scene.camera.target = {18, 22, 14};
         scene.camera.up = {0, 0, 1};
       }
-      for (const char* name : {"riemann", "preint1", "preint2"}) {
-        const MethodSpec spec{.name = name, .step = 1, .table_size = 64, .iterations = 16};
+      // (preint2-dual's packets leap over the empty runs: the segments after
+      // a leap must be the plain walk's.)
+      for (const char* name : {"riemann", "preint1", "preint2", "preint2-dual"}) {
+        const MethodSpec spec{.name = name, .step = 1, .table_size = 32, .table_size_given = true, .iterations = 8};
         expect_same_bytes(render_with(scene, spec, kPlain), render_with(scene, spec, kSkip),
                           std::string(name) + " trial " + std::to_string(trial) + " view " + std::to_string(view));
       }
@@ -236,9 +238,10 @@ TEST(FastPath, FloatPathIsWithin1e4OfTheDoublePath) {
   }
 }
 
-// The packets of 8 rays of riemann, preint1 and preint2 (float_packet.hpp; render
-// hands each tile row to integrate_row) against integrate, ray by ray: the
-// same bytes, with skipping, with and without termination. Skipped where
+// The packets of 8 rays of riemann, preint1, preint2 and unlit preint2-dual
+// (float_packet.hpp; render hands each tile row to integrate_row) against
+// integrate, ray by ray: the same bytes, with skipping (preint2-dual's packets
+// leap where its scalar march walks), with and without termination. Skipped where
 // there are no packets (both would be the scalar march): a build with
 // VRI_SIMD off or for another target than x86-64, or a CPU without AVX2.
 TEST(FastPath, PacketsGiveTheBytesOfTheScalarFloatPath) {
@@ -247,9 +250,10 @@ TEST(FastPath, PacketsGiveTheBytesOfTheScalarFloatPath) {
   for (const char* file : {"scenes/neghip.json", "scenes/engine.json", "scenes/bonsai.json"}) {
     const Scene scene = small(file, 32);
     const Camera camera(scene.camera);
-    for (const char* name : {"riemann", "preint1", "preint2"})
+    for (const char* name : {"riemann", "preint1", "preint2", "preint2-dual"})
       for (const FastPath& fast : {kSkip, FastPath{.skip_empty = true, .termination = 0.05}}) {
-        MethodSpec spec{.name = name, .step = 1, .table_size = 64, .iterations = 16};
+        const bool dual = std::string(name) == "preint2-dual";  // (32 lengths: a smaller table builds faster)
+        MethodSpec spec{.name = name, .step = 1, .table_size = dual ? 32 : 64, .table_size_given = true, .iterations = 16};
         spec.fast = fast;
         const auto integrator = make_integrator(spec, scene.grid(), scene.transfer_function);
         const Image packets = render(camera, *integrator, {.threads = 1, .tile_size = 32});
@@ -259,6 +263,59 @@ TEST(FastPath, PacketsGiveTheBytesOfTheScalarFloatPath) {
         expect_same_bytes(packets, single,
                           std::string(name) + " " + file + " termination " + std::to_string(fast.termination));
       }
+  }
+}
+
+// preint2-dual's packets leap over runs of empty macro cells where its
+// scalar march walks every cell: after a leap they must stand where the walk
+// stands (the next planes, the segment the run ends in), whatever rounding
+// puts the run's end just before or after a cell face. Sparse data (most
+// macro cells empty, runs ending on every face), rays from macro faces and
+// grid lines along axes, face and space diagonals and at random, in packets
+// of 8: each pixel the scalar march's bytes.
+TEST(FastPath, DualPacketsLeapToTheWalksNextSegment) {
+  if (!detail::packets_available())
+    GTEST_SKIP() << "no AVX2 ray packets in this build or on this CPU (src/core/simd.hpp)";
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(0, 1);
+  const GridVolume volume =
+      test::volume_from({41, 41, 41}, [&](double, double, double) { return u(rng) < 1.4e-3 ? 15.0 + 10 * u(rng) : 0.0; });
+  const TransferFunction tf({{10, 1, 0.5, 0.2, 0}, {20, 0.2, 1, 0.5, 0.5}, {30, 0.5, 0.2, 1, 0}, {40, 1, 1, 1, 0}});
+  const MethodSpec spec{.name = "preint2-dual", .table_size = 16, .table_size_given = true, .iterations = 4,
+                        .fast = kSkip};
+  const auto integrator = make_integrator(spec, volume, tf);
+  std::vector<Ray> rays;
+  for (int k = 0; k < 24000; ++k) {
+    const Vec3 from{8.0 * int(u(rng) * 6), double(int(u(rng) * 41)), 40 * u(rng)};
+    const int kind = k % 4;
+    Vec3 dir = kind == 0   ? Vec3{1, 0, 0}
+               : kind == 1 ? Vec3{1, 1, 0}
+               : kind == 2 ? Vec3{1, 1, 1}
+                           : Vec3{u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5};
+    if (k % 8 >= 4) dir = -1.0 * dir;
+    rays.push_back({from - 100.0 * dir, dir});
+  }
+  std::vector<Rgba> packets(rays.size());
+  integrator->integrate_row(rays.data(), static_cast<int>(rays.size()), packets.data());
+  int differ = 0, seen = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const Rgba one = integrator->integrate(rays[i]);
+    differ += one != packets[i] ? 1 : 0;
+    seen += one[3] > 0 ? 1 : 0;
+  }
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(seen, 500);  // many rays reach matter behind their runs
+  // The bundled views at full size: a leap that started the walk again at the
+  // skipped segment's front, not its end, changed 2 of neghip's 262144 pixels.
+  for (const char* file : {"scenes/neghip.json", "scenes/engine.json"}) {
+    const Scene scene = small(file, 512);
+    const auto dual = make_integrator({.name = "preint2-dual", .fast = kSkip}, scene.grid(), scene.transfer_function);
+    const Camera camera(scene.camera);
+    const Image image = render(camera, *dual, {.threads = 2});
+    Image single(camera.width(), camera.height());
+    for (int y = 0; y < camera.height(); ++y)
+      for (int x = 0; x < camera.width(); ++x) single.set(x, y, dual->integrate(camera.ray(x, y)));
+    expect_same_bytes(image, single, file);
   }
 }
 
@@ -296,20 +353,24 @@ TEST(FastPath, EveryStorageTypeGivesTheBytesOfTheFloatVolume) {
   expect_storage_gives_float_bytes<std::int16_t>(250, -32000);  // negative and positive samples
 }
 
-// The lit float paths (float_shading.hpp, float_march.hpp: riemann, and
-// preint1 and preint2 in both modes): within 1e-4 of the lit double paths,
-// their packets the bytes of their scalar marches, skipping exact.
+// The lit float paths (float_shading.hpp, float_march.hpp, dual_march.hpp:
+// riemann, and preint1, preint2 and preint2-dual in both modes): within 1e-4
+// of the lit double paths, their packets the bytes of their scalar marches,
+// skipping exact.
 TEST(FastPath, LitFloatPathsAndPackets) {
   const std::pair<const char*, const char*> cases[] = {
-      {"riemann", "sampled"}, {"preint1", "sampled"}, {"preint1", "interpolated"},
-      {"preint2", "sampled"}, {"preint2", "interpolated"}};  // riemann has no modes
+      {"riemann", "sampled"},      {"preint1", "sampled"},           {"preint1", "interpolated"},
+      {"preint2", "sampled"},      {"preint2", "interpolated"},      {"preint2-dual", "sampled"},
+      {"preint2-dual", "interpolated"}};  // riemann has no modes
   for (const char* file : {"scenes/neghip_lit.json", "scenes/marschner_lobb_lit.json"})
     for (const auto& [name, mode] : cases) {
       const Scene scene = small(file, 40);
       Lighting lighting = scene.lighting;
       lighting.mode = mode;
       const std::string what = std::string(name) + " " + mode + " " + file;
-      const MethodSpec spec{.name = name, .step = 0.5, .table_size = 64, .iterations = 16};
+      const bool dual = std::string(name) == "preint2-dual";  // (32 lengths: a smaller table builds faster)
+      const MethodSpec spec{.name = name, .step = 0.5, .table_size = dual ? 32 : 64, .table_size_given = true,
+                            .iterations = 16};
       const Image fast = render_with(scene, spec, kSkip, lighting);
       const double worst = max_difference(fast, render_with(scene, spec, kSkipDouble, lighting));
       EXPECT_LE(worst, 1e-4) << what;
