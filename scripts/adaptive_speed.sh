@@ -9,8 +9,8 @@
 # docs/ACCURACY.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build=${1:-build}; reps=${2:-3}; vri=$build/vri; tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-echo "Load average: $(cut -d' ' -f1-3 /proc/loadavg); $(nproc) cores; $(date -u '+%Y-%m-%d %H:%M UTC')."
+source scripts/fastest_renders.sh
+timing_setup "$@"
 echo
 echo "| scene | renderer | wall ms | riemann h = 0.1 / this | largest error | pixels over 1e-3 |"
 echo "|---|---|---|---|---|---|"
@@ -19,15 +19,7 @@ for s in bonsai neghip; do
   names=("riemann h = 0.1" "adaptive coupled 1e-3" "adaptive decoupled 1e-3" "adaptive guaranteed 1e-3")
   args=("--method riemann --step 0.1" "--method adaptive --strategy coupled --tolerance 1e-3"
         "--method adaptive --strategy decoupled --tolerance 1e-3" "--method adaptive --strategy guaranteed --tolerance 1e-3")
-  best=()
-  for _ in $(seq "$reps"); do
-    for i in "${!args[@]}"; do
-      # shellcheck disable=SC2086
-      w=$("$vri" render "scenes/$s.json" ${args[$i]} --threads 2 -q -o "$tmp/$i.npy" 2>&1 |
-          awk '/rendered/ { for (j = 1; j < NF; ++j) if ($j == "in") printf "%.1f", $(j + 1) * 1000 }')
-      if [[ -z ${best[$i]:-} ]] || awk -v a="$w" -v b="${best[$i]}" 'BEGIN { exit !(a < b) }'; then best[$i]=$w; fi
-    done
-  done
+  fastest_renders "$vri" "scenes/$s.json" "$reps" "$tmp" "${args[@]}"
   for i in "${!args[@]}"; do
     err=$(/usr/bin/python3 -c "
 import numpy as np, sys

@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?usage: performance.sh OUT_DIR [BUILD_DIR]}; build=${2:-build}
-parts=" ${PARTS:-render tables lighting preint_render mesh vtk_mesh vtk_grid float_paths skipping macro_cells scaling brick_layout viewer adaptive memory equal_error} "
+parts=" ${PARTS:-render tables lighting preint_render second_order mesh vtk_mesh vtk_grid float_paths skipping macro_cells scaling brick_layout viewer adaptive memory equal_error} "
 mkdir -p "$out"
 stamp() { echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"; }
 want() { [[ "$parts" == *" $1 "* ]]; }
@@ -34,6 +34,9 @@ fi
 if want preint_render; then
   { stamp; "$build/bench/bench_preint_render" --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
       --benchmark_report_aggregates_only=true; } >"$out/preint_render.txt" 2>&1
+fi
+if want second_order; then
+  bash scripts/second_order_speed.sh "$build" 3 >"$out/second_order.txt" 2>&1
 fi
 if want mesh; then
   { stamp; "$build/bench/bench_mesh" --benchmark_min_time=1; } >"$out/mesh.txt" 2>&1

@@ -11,32 +11,31 @@
 # fastest render time as vri reports it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build=${1:-build}; reps=${2:-3}; vri=$build/vri; tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-echo "Load average: $(cut -d' ' -f1-3 /proc/loadavg); $(nproc) cores; $(date -u '+%Y-%m-%d %H:%M UTC')."
+source scripts/fastest_renders.sh
+timing_setup "$@"
 echo
 echo "| scene | h (voxels) | preint1 @ h ms | preint2 @ h ms | preint2-dual ms | preint2 / preint1 | preint2-dual / preint1 |"
 echo "|---|---|---|---|---|---|---|"
 for s in neghip engine bonsai fuel bucky; do
-  h=$(/usr/bin/python3 - "scenes/$s.json" <<'EOF'
-import json, sys, numpy as np
-scene = json.load(open(sys.argv[1]))
-spacing = np.array(scene["volume"].get("spacing", [1, 1, 1]), float)
-d = np.array(scene["camera"]["target"], float) - np.array(scene["camera"]["eye"], float)
+  h=$(/usr/bin/python3 - "$vri" "scenes/$s.json" <<'PY'
+import json, os, subprocess, sys
+import numpy as np
+vri, path = sys.argv[1:]
+# The camera as vri resolves it (fit, motions) and the spacing as vri reads the volume.
+camera = json.loads(subprocess.run([vri, "camera", path], capture_output=True, check=True).stdout)
+volume = json.load(open(path))["volume"]
+raw = ["--dims", *map(str, volume["dims"]), "--type", volume["type"]] if "dims" in volume else []
+info = subprocess.run([vri, "info", os.path.join(os.path.dirname(path), volume["file"]), *raw],
+                      capture_output=True, check=True, text=True).stdout
+spacing = np.array([float(x) for x in next(l for l in info.splitlines() if l.startswith("spacing:")).split()[1:4]])
+d = np.array(camera["target"], float) - np.array(camera["eye"], float)
 d /= np.linalg.norm(d)
-segment = 1 / np.sum(np.abs(d) / spacing)          # world units per cell segment
-print(f"{segment / 2 / spacing.min():.3f}")         # half a segment, in voxels
-EOF
+segment = 1 / np.sum(np.abs(d) / spacing)  # world units per cell segment
+print(f"{segment / 2 / spacing.min():.3f}")  # half a segment, in voxels
+PY
 )
   args=("--method preint1 --step $h" "--method preint2 --step $h" "--method preint2-dual")
-  best=()
-  for _ in $(seq "$reps"); do
-    for i in "${!args[@]}"; do
-      # shellcheck disable=SC2086
-      w=$("$vri" render "scenes/$s.json" ${args[$i]} --threads 2 -q -o "$tmp/$i.npy" 2>&1 |
-          awk '/rendered/ { for (j = 1; j < NF; ++j) if ($j == "in") printf "%.1f", $(j + 1) * 1000 }')
-      if [[ -z ${best[$i]:-} ]] || awk -v a="$w" -v b="${best[$i]}" 'BEGIN { exit !(a < b) }'; then best[$i]=$w; fi
-    done
-  done
+  fastest_renders "$vri" "scenes/$s.json" "$reps" "$tmp" "${args[@]}"
   echo "| $s | $h | ${best[0]} | ${best[1]} | ${best[2]} |" \
        "$(awk -v a="${best[1]}" -v b="${best[0]}" 'BEGIN { printf "%.2f", a / b }') |" \
        "$(awk -v a="${best[2]}" -v b="${best[0]}" 'BEGIN { printf "%.2f", a / b }') |"

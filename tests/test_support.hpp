@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "vri/core/ray.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -51,6 +52,23 @@ inline TransferFunction random_tf(std::mt19937& rng, double s_max, double tau_ma
     if (steps && u(rng) < 0.15) pts.push_back({s[i], u(rng), u(rng), u(rng), u(rng) * tau_max});  // a step
   }
   return TransferFunction(pts);
+}
+
+// Ray k of a set that stresses walks over a 41-point grid with 8-cell macro
+// cells: through a point on a macro face (x = 8m) and a grid line (y whole),
+// along an axis, a face diagonal, the space diagonal or at random (k % 4),
+// either way (k % 8 >= 4), starting 100 units back; rounding puts such points
+// on either side of a face.
+inline Ray ray_along_faces(std::mt19937& rng, int k) {
+  std::uniform_real_distribution<double> u(0, 1);
+  const Vec3 through{8.0 * int(u(rng) * 6), double(int(u(rng) * 41)), 40 * u(rng)};
+  const int kind = k % 4;
+  Vec3 dir = kind == 0   ? Vec3{1, 0, 0}
+             : kind == 1 ? Vec3{1, 1, 0}
+             : kind == 2 ? Vec3{1, 1, 1}
+                         : Vec3{u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5};
+  if (k % 8 >= 4) dir = -1.0 * dir;
+  return {through - 100.0 * dir, dir};
 }
 
 // A fresh empty folder under the system temp dir, removed at scope exit.

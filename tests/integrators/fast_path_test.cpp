@@ -285,16 +285,7 @@ TEST(FastPath, DualPacketsLeapToTheWalksNextSegment) {
                         .fast = kSkip};
   const auto integrator = make_integrator(spec, volume, tf);
   std::vector<Ray> rays;
-  for (int k = 0; k < 24000; ++k) {
-    const Vec3 from{8.0 * int(u(rng) * 6), double(int(u(rng) * 41)), 40 * u(rng)};
-    const int kind = k % 4;
-    Vec3 dir = kind == 0   ? Vec3{1, 0, 0}
-               : kind == 1 ? Vec3{1, 1, 0}
-               : kind == 2 ? Vec3{1, 1, 1}
-                           : Vec3{u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5};
-    if (k % 8 >= 4) dir = -1.0 * dir;
-    rays.push_back({from - 100.0 * dir, dir});
-  }
+  for (int k = 0; k < 24000; ++k) rays.push_back(test::ray_along_faces(rng, k));
   std::vector<Rgba> packets(rays.size());
   integrator->integrate_row(rays.data(), static_cast<int>(rays.size()), packets.data());
   int differ = 0, seen = 0;

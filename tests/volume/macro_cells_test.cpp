@@ -253,16 +253,7 @@ TEST(EmptySpace, OccupiedRunsCoverExactlyTheNonEmptyCells) {
   };
   int parts_seen = 0;
   for (int trial = 0; trial < 400; ++trial) {
-    // From a point on a macro face (x = 8k) or a grid line, in a direction
-    // often along an axis or a diagonal.
-    Vec3 from{8.0 * int(u(rng) * 6), double(int(u(rng) * 41)), 40 * u(rng)};
-    const int kind = trial % 4;
-    Vec3 dir = kind == 0   ? Vec3{1, 0, 0}
-               : kind == 1 ? Vec3{1, 1, 0}
-               : kind == 2 ? Vec3{1, 1, 1}
-                           : Vec3{u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5};
-    if (trial % 8 >= 4) dir = -1.0 * dir;
-    const Ray ray{from - 100.0 * dir, dir};
+    const Ray ray = test::ray_along_faces(rng, trial);
     const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
     if (!iv) continue;
     std::vector<Interval> parts;
