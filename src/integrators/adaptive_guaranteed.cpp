@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "cubic.hpp"
+#include "early_stop.hpp"
 #include "simpson_colour_step.hpp"
 #include "tf_pieces.hpp"
 #include "vri/volume/cell_traversal.hpp"
@@ -83,9 +84,9 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
   const double colour_density = 0.45 * tolerance_ / iv->length();
   // Lit colours reach max_brightness: what an optical-depth error or the
   // early stop can change behind T is T times that, not T.
-  const double brightest = std::max(1.0, shader_ ? shader_->max_brightness() : 1.0);
+  const double brightest = brightest_colour(shader_);
   const double depth_density = colour_density / brightest;
-  const double cutoff = 0.1 * tolerance_ / brightest;
+  const double cutoff = early_stop_transmittance(tolerance_, brightest);
   double T = 1;
   double C[3] = {0, 0, 0};
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "early_stop.hpp"
 #include "simpson_colour_step.hpp"
 #include "vri/core/error.hpp"
 #include "vri/volume/empty_space.hpp"
@@ -16,7 +17,7 @@ AdaptiveSimpsonIntegrator::AdaptiveSimpsonIntegrator(const GridVolume& volume,
     : volume_(volume), tf_(tf), tolerance_(params.tolerance), skipping_(volume, ZeroOpacity(tf), fast, "adaptive") {
   params.validate();
   if (lighting.enabled) shader_.emplace(lighting, volume);
-  if (fast.skip_empty) cutoff_ = 0.1 * tolerance_ / std::max(1.0, shader_ ? shader_->max_brightness() : 1.0);
+  if (fast.skip_empty) cutoff_ = early_stop_transmittance(tolerance_, brightest_colour(shader_));
   if (params.strategy == AdaptiveStrategy::Guaranteed)
     throw Error("adaptive: AdaptiveSimpsonIntegrator implements coupled and decoupled only");
   const double vu = volume.voxel_unit();

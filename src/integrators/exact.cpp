@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cubic.hpp"
+#include "early_stop.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri {
@@ -26,13 +27,13 @@ Rgba ExactIntegrator::integrate(const Ray& ray) const {
   // The tolerance is on colours up to 1; lit colours reach max_brightness, and
   // the budget scales with it (issue 16): with specular 1e300 the rounding of
   // |N.d| near its zero alone is far above an absolute 1e-6.
-  const double brightest = std::max(1.0, shader_ ? shader_->max_brightness() : 1.0);
+  const double brightest = brightest_colour(shader_);
   const double error_per_length = tolerance_ * brightest / iv->length();
   // What is left after stopping is at most T * (brightest colour) per channel.
   // Not above 1e-7: a brick of a distributed render (GridVolume::Brick)
   // starts at T = 1 and so stops at another place than the whole ray, and
   // the two images must agree within 1e-6 (SPEC §11).
-  const double cutoff = std::min(0.1 * tolerance_, 1e-7) / brightest;
+  const double cutoff = std::min(early_stop_transmittance(tolerance_, brightest), 1e-7 / brightest);
   for_each_cell_segment(volume_, ray, owned_part(*iv), [&](const CellSegment& seg) {
     integrate_cell(seg, ray.dir, error_per_length, acc);
     return acc.T > cutoff;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cubic.hpp"
+#include "early_stop.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri {
@@ -24,7 +25,7 @@ Rgba MeshExactIntegrator::integrate(const Ray& ray) const {
   if (!iv) return {0, 0, 0, 0};
   PieceIntegrator::Accumulator acc;
   const double error_per_length = tolerance_ / iv->length();
-  const double cutoff = 0.1 * tolerance_ / std::max(1.0, shader_ ? shader_->max_brightness() : 1.0);
+  const double cutoff = early_stop_transmittance(tolerance_, brightest_colour(shader_));
   walk_.for_each_segment(ray, [&](const TetSegment& seg) {
     const double len = seg.tb - seg.ta;
     if (!shader_) {
