@@ -75,12 +75,12 @@ VRI_AVX2 __m256 fraction8(const DualLanes& L, int a, double scale) {
 
 // Lane l's walk, standing at the end of a skipped segment, moved to where the
 // scalar walk stands after the segments that end by x (all in an empty run,
-// so skipped too): for each axis the last
-// plane crossed by x, found from an estimate and the walk's own crossing
-// formula (plane - u0) / du, whose values are monotone in the plane; the
-// walk then starts at the latest of those crossings with the next plane on
-// each axis ahead, as the scalar walk does after its segment ending there.
-// The same segments follow, without walking the cells between.
+// so skipped too). For each axis: the last plane crossed by x, found from an
+// estimate and the walk's own crossing formula (plane - u0) / du, whose
+// values are monotone in the plane. The walk then starts at the latest of
+// those crossings with the next plane on each axis ahead, as the scalar walk
+// does after its segment ending there: the same segments follow, without
+// walking the cells between.
 void leap_to(DualLanes& L, int l, double x) {
   double ta = L.tb[l];  // the walk has passed the skipped segment's planes already
   for (int a = 0; a < 3; ++a) {
