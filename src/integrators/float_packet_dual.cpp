@@ -106,8 +106,8 @@ VRI_AVX2 void dual_blend8(const DualFloatLookup& table, int k, const int* slice,
   for (int l = 0; l < kPacket; ++l)
     at_lo[l] = table.data(slice[l], k) + first[l], at_hi[l] = table.data(slice[l] + 1, k) + first[l];
   __m256 v_lo[4], v_hi[4];
-  blend8(at_lo, row, plane, w[0], w[1], w[2], v_lo);
-  blend8(at_hi, row, plane, w[0], w[1], w[2], v_hi);
+  blend8(LaneCorners{at_lo}, row, plane, w[0], w[1], w[2], v_lo);
+  blend8(LaneCorners{at_hi}, row, plane, w[0], w[1], w[2], v_hi);
   for (int c = 0; c < 4; ++c) v[c] = lerp(v_lo[c], v_hi[c], wlen);
 }
 

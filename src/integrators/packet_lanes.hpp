@@ -98,12 +98,10 @@ VRI_AVX2 void store(float* p, __m256 v) { _mm256_store_ps(p, v); }
 VRI_AVX2 void store(int* p, __m256i v) { _mm256_store_si256(reinterpret_cast<__m256i*>(p), v); }
 VRI_AVX2 unsigned mask(__m256i m) { return static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(m))); }
 
-// The 4-float table entries at[l] + add of the 8 lanes, as 4 vectors (r, g,
-// b, alpha) of 8 lanes: lanes l and l + 4 loaded into one register, then
-// transposed 4 by 4 in each half.
-VRI_AVX2 void corner(const float* const* at, int add, __m256 channel[4]) {
-  __m256 q[4];
-  for (int l = 0; l < 4; ++l) q[l] = _mm256_loadu2_m128(at[l + 4] + add, at[l] + add);
+// Four registers of two 4-float entries each (lanes l and l + 4 in
+// register l) as 4 vectors (r, g, b, alpha) of 8 lanes: transposed 4 by 4
+// in each half.
+VRI_AVX2 void transpose8(const __m256 (&q)[4], __m256 channel[4]) {
   const __m256 t0 = _mm256_unpacklo_ps(q[0], q[1]), t1 = _mm256_unpackhi_ps(q[0], q[1]);
   const __m256 t2 = _mm256_unpacklo_ps(q[2], q[3]), t3 = _mm256_unpackhi_ps(q[2], q[3]);
   channel[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
@@ -111,11 +109,20 @@ VRI_AVX2 void corner(const float* const* at, int add, __m256 channel[4]) {
   channel[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
   channel[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
 }
-// The same for entries data + entry[l] + add of one table.
+
+// The 4-float table entries data + entry[l] + add of the 8 lanes, as 4
+// vectors (r, g, b, alpha) of 8 lanes.
 VRI_AVX2 void corner(const float* data, const int* entry, int add, __m256 channel[4]) {
-  const float* at[kPacket];
-  for (int l = 0; l < kPacket; ++l) at[l] = data + entry[l];
-  corner(at, add, channel);
+  __m256 q[4];
+  for (int l = 0; l < 4; ++l) q[l] = _mm256_loadu2_m128(data + entry[l + 4] + add, data + entry[l] + add);
+  transpose8(q, channel);
+}
+// The same for entries at[l] + add, each lane in its own table
+// (preint2-dual's length slices).
+VRI_AVX2 void corner(const float* const* at, int add, __m256 channel[4]) {
+  __m256 q[4];
+  for (int l = 0; l < 4; ++l) q[l] = _mm256_loadu2_m128(at[l + 4] + add, at[l] + add);
+  transpose8(q, channel);
 }
 
 // Lanes 0 1 4 5 2 3 6 7 (what shuffle_ps leaves) back in order.
@@ -272,24 +279,34 @@ VRI_AVX2 void blend8(const FloatLookup& table, const float* data, const Lanes<1>
   const __m256 wf = load(L.w[0]), wb = load(L.w[1]);
   for (int c = 0; c < 4; ++c) v[c] = lerp(lerp(e00[c], e01[c], wb), lerp(e10[c], e11[c], wb), wf);
 }
-// SecondOrderFloatLookup::blend of the 8 lanes' entries at[l] (row and plane:
+// SecondOrderFloatLookup::blend of the 8 lanes at the entries `Corners`
+// reads (corners(add, channels): the entries add floats on; row and plane:
 // the table's strides), weights wf, wm, wb.
-VRI_AVX2 void blend8(const float* const* at, int row, int plane, __m256 wf, __m256 wm, __m256 wb, __m256 v[4]) {
+template <class Corners>
+VRI_AVX2 void blend8(const Corners& corners, int row, int plane, __m256 wf, __m256 wm, __m256 wb, __m256 v[4]) {
   __m256 c[2][2][4];  // along s_b at (f, m), f and m each 0 or 1
   for (int f = 0; f < 2; ++f)
     for (int m = 0; m < 2; ++m) {
       __m256 lo[4], hi[4];
-      corner(at, f * plane + m * row, lo);
-      corner(at, f * plane + m * row + 4, hi);
+      corners(f * plane + m * row, lo);
+      corners(f * plane + m * row + 4, hi);
       for (int ch = 0; ch < 4; ++ch) c[f][m][ch] = lerp(lo[ch], hi[ch], wb);
     }
   for (int ch = 0; ch < 4; ++ch) v[ch] = lerp(lerp(c[0][0][ch], c[0][1][ch], wm), lerp(c[1][0][ch], c[1][1][ch], wm), wf);
 }
+// The entries of one table at the lanes' entries, or of each lane's own table.
+struct TableCorners {
+  const float* data;
+  const int* entry;
+  VRI_AVX2 void operator()(int add, __m256 channel[4]) const { corner(data, entry, add, channel); }
+};
+struct LaneCorners {
+  const float* const* at;
+  VRI_AVX2 void operator()(int add, __m256 channel[4]) const { corner(at, add, channel); }
+};
 VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const float* data, const Lanes<2>& L, __m256 v[4]) {
-  const float* at[kPacket];
-  for (int l = 0; l < kPacket; ++l) at[l] = data + L.entry[l];
-  blend8(at, static_cast<int>(table.row()), static_cast<int>(table.plane()), load(L.w[0]), load(L.w[1]), load(L.w[2]),
-         v);
+  blend8(TableCorners{data, L.entry}, static_cast<int>(table.row()), static_cast<int>(table.plane()), load(L.w[0]),
+         load(L.w[1]), load(L.w[2]), v);
 }
 
 // exp_neg (float_math.hpp) on 8 lanes, the same operations in the same order.

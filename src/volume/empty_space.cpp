@@ -19,16 +19,6 @@ std::array<int, 3> macro_cell_at(const GridVolume& v, Vec3 p) {
 
 }  // namespace
 
-EmptySpace::Faces::Faces(const GridVolume& volume, const Ray& ray) {
-  for (int a = 0; a < 3; ++a) {
-    step[a] = ray.dir[a] > 0 ? 1 : ray.dir[a] < 0 ? -1 : 0;
-    origin[a] = volume.origin()[a];
-    width[a] = MacroCells::kCells * volume.spacing()[a];
-    inverse[a] = step[a] != 0 ? 1 / ray.dir[a] : 0;
-    from[a] = ray.origin[a];
-  }
-}
-
 double interpolation_margin(const GridVolume& v) {
   const double largest = std::max(std::abs(double(v.min_value())), std::abs(double(v.max_value())));
   return 1e-5 * (double(v.max_value()) - v.min_value() + largest);
@@ -49,9 +39,19 @@ EmptySpace::Run EmptySpace::run(const Ray& ray, double t, double t_max) const {
   const GridVolume& v = cells_.volume();
   const auto& m = cells_.dims();
   std::array<int, 3> cell = macro_cell_at(v, ray.at(t));
-  const Faces faces(v, ray);
-  const int(&step)[3] = faces.step;
-  const auto exit = [&](int a) { return faces.exit(cell, a); };
+  int step[3];
+  double width[3], inverse[3];  // macro cell width, world units; 1 / ray direction
+  for (int a = 0; a < 3; ++a) {
+    step[a] = ray.dir[a] > 0 ? 1 : ray.dir[a] < 0 ? -1 : 0;
+    width[a] = MacroCells::kCells * v.spacing()[a];
+    inverse[a] = step[a] != 0 ? 1 / ray.dir[a] : 0;
+  }
+  // t at which the ray leaves the current macro cell through the face on axis a.
+  const auto exit = [&](int a) {
+    if (step[a] == 0) return std::numeric_limits<double>::infinity();
+    const double face = v.origin()[a] + (cell[a] + (step[a] > 0 ? 1 : 0)) * width[a];
+    return (face - ray.origin[a]) * inverse[a];
+  };
   // Walk while the cells are as the first one (empty or not): the run ends where that changes.
   std::size_t index = cells_.index(cell[0], cell[1], cell[2]);
   const bool is_empty = empty(index);
@@ -85,8 +85,16 @@ EmptySpace::Run EmptySpace::run(const Ray& ray, double t, double t_max) const {
 }
 
 EmptySpace::Walk::Walk(const EmptySpace& space, const Ray& ray, double t, double t_max)
-    : space_(space), faces_(space.cells_.volume(), ray), t_max_(t_max), cell_(macro_cell_at(space.cells_.volume(), ray.at(t))) {
-  for (int a = 0; a < 3; ++a) leave_[a] = faces_.exit(cell_, a);
+    : space_(space), ray_(ray), t_max_(t_max), cell_(macro_cell_at(space.cells_.volume(), ray.at(t))) {
+  for (int a = 0; a < 3; ++a) step_[a] = ray.dir[a] > 0 ? 1 : ray.dir[a] < 0 ? -1 : 0;
+  for (int a = 0; a < 3; ++a) leave_[a] = exit(a);
+}
+
+double EmptySpace::Walk::exit(int a) const {
+  if (step_[a] == 0) return std::numeric_limits<double>::infinity();
+  const GridVolume& v = space_.cells_.volume();
+  const double face = v.origin()[a] + (cell_[a] + (step_[a] > 0 ? 1 : 0)) * (MacroCells::kCells * v.spacing()[a]);
+  return (face - ray_.origin[a]) / ray_.dir[a];
 }
 
 bool EmptySpace::Walk::next(Run& run) {
@@ -97,13 +105,13 @@ bool EmptySpace::Walk::next(Run& run) {
     // The face crossed first (the lower axis on ties).
     const int a = leave_[0] <= leave_[1] ? (leave_[0] <= leave_[2] ? 0 : 2) : (leave_[1] <= leave_[2] ? 1 : 2);
     const double leave = leave_[a];
-    cell_[a] += faces_.step[a];
+    cell_[a] += step_[a];
     if (leave >= t_max_ || cell_[a] < 0 || cell_[a] >= m[a]) {
       done_ = true;
       run = {is_empty, t_max_};
       return true;
     }
-    leave_[a] = faces_.exit(cell_, a);
+    leave_[a] = exit(a);
     if (space_.empty(space_.cells_.index(cell_[0], cell_[1], cell_[2])) != is_empty) {
       run = {is_empty, leave};
       return true;

@@ -21,7 +21,6 @@
 // Classifying is O(macro cells) and takes milliseconds (bench_macro_cells).
 #include <array>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "vri/core/ray.hpp"
@@ -51,22 +50,6 @@ class EmptySpace {
   };
   Run run(const Ray& ray, double t, double t_max) const;
 
-  // The macro-cell faces a ray crosses, for both walks (run and Walk), so
-  // that their runs end at the same t: per axis the ray's step (-1, 0 or 1),
-  // the faces' spacing and 1 / direction (a multiply in the walks' loops).
-  struct Faces {
-    Faces(const GridVolume& volume, const Ray& ray);
-    // Where the ray leaves macro cell m through its face on axis a
-    // (infinity when it does not move along a).
-    double exit(const std::array<int, 3>& m, int a) const {
-      if (step[a] == 0) return std::numeric_limits<double>::infinity();
-      const double face = origin[a] + (m[a] + (step[a] > 0 ? 1 : 0)) * width[a];
-      return (face - from[a]) * inverse[a];
-    }
-    int step[3];
-    double origin[3], width[3], inverse[3], from[3];  // grid origin, face spacing, 1 / direction, ray origin
-  };
-
   // One walk of the macro cells along a ray from the cell at t (the one
   // GridVolume::sample reads there), run after run: each run starts exactly
   // where the last one ended, so a walk never stalls on a face that
@@ -78,10 +61,12 @@ class EmptySpace {
     bool next(Run& run);
 
    private:
+    double exit(int a) const;  // where the ray leaves the current cell through its face on axis a
     const EmptySpace& space_;
-    Faces faces_;
+    const Ray& ray_;
     double t_max_;
     std::array<int, 3> cell_;
+    int step_[3];
     double leave_[3];
     bool done_ = false;
   };
