@@ -116,10 +116,8 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
                                                 const DualFloatLookup& table, const FloatShading* shading,
                                                 bool interpolated, const Ray* rays, const Leap& leap, Rgba* out) {
   const auto& n = volume.dims();
-  const Vec3 sp = volume.spacing(), org = volume.origin();
   const int last[3] = {n[0] - 2, n[1] - 2, n[2] - 2};
   const int sy = n[0], sz = n[0] * n[1];
-  constexpr double inf = std::numeric_limits<double>::infinity();
   DualLanes L{};
   std::optional<SegmentSkip> skip[kPacket];
   unsigned active = 0;
@@ -127,8 +125,8 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
     out[l] = {L.r[l], L.g[l], L.b[l], 1 - L.T[l]};
     active &= ~(1u << l);
   };
-  // for_each_cell_segment's set-up, lane by lane; lanes without a ray keep
-  // ta = t1 = 0 and are never active.
+  // for_each_cell_segment's set-up (cell_walk_axis), lane by lane; lanes
+  // without a ray keep ta = t1 = 0 and are never active.
   for (int l = 0; l < kPacket; ++l) {
     const Ray& ray = rays[l];
     const auto whole = volume.clip(ray);
@@ -138,11 +136,8 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
     }
     const Interval iv = owned_part(*whole);  // all of it unless a brick (GridVolume::Brick)
     for (int a = 0; a < 3; ++a) {
-      const double u0 = (ray.origin[a] - org[a]) / sp[a], du = ray.dir[a] / sp[a], ua = u0 + du * iv.t0;
-      const int dir = du > 0 ? 1 : (du < 0 ? -1 : 0);
-      L.u0[a][l] = u0, L.du[a][l] = du, L.dir[a][l] = dir;
-      L.plane[a][l] = dir > 0 ? std::floor(ua) + 1 : std::ceil(ua) - 1;
-      L.t_next[a][l] = dir ? (L.plane[a][l] - u0) / du : inf;
+      const CellWalkAxis w = cell_walk_axis(volume, ray, iv.t0, a);
+      L.u0[a][l] = w.u0, L.du[a][l] = w.du, L.dir[a][l] = w.dir, L.plane[a][l] = w.plane, L.t_next[a][l] = w.t_next;
     }
     L.ta[l] = iv.t0, L.t1[l] = iv.t1, L.T[l] = 1;
     const FloatShading::Vector d = direction(ray);

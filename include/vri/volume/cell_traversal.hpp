@@ -19,6 +19,27 @@ struct CellSegment {
   Vec3 local_dir;           // d(local)/dt
 };
 
+// One axis of the cell walk from t0: the ray's grid position at t = 0 and per
+// unit t, its direction (-1, 0 or 1), the first face plane ahead and where
+// the ray crosses it (infinity when it does not move along the axis). Planes
+// are crossed at (plane - u0) / du, recomputed from the integer plane (no
+// accumulated drift). Shared with preint2-dual's packets, whose lanes walk as
+// this walk does.
+struct CellWalkAxis {
+  double u0, du, plane, t_next;
+  int dir;
+};
+inline CellWalkAxis cell_walk_axis(const GridVolume& vol, const Ray& ray, double t0, int a) {
+  CellWalkAxis w;
+  w.u0 = (ray.origin[a] - vol.origin()[a]) / vol.spacing()[a];
+  w.du = ray.dir[a] / vol.spacing()[a];
+  const double ua = w.u0 + w.du * t0;
+  w.dir = w.du > 0 ? 1 : (w.du < 0 ? -1 : 0);
+  w.plane = w.dir > 0 ? std::floor(ua) + 1 : std::ceil(ua) - 1;
+  w.t_next = w.dir ? (w.plane - w.u0) / w.du : std::numeric_limits<double>::infinity();
+  return w;
+}
+
 // Calls visit(const CellSegment&) for every cell piece of [iv.t0, iv.t1], front
 // to back; stops early when visit returns false. Plane crossings are recomputed
 // from their integer index (no accumulated drift), and each piece's cell is
@@ -26,17 +47,11 @@ struct CellSegment {
 template <class Visit>
 void for_each_cell_segment(const GridVolume& vol, const Ray& ray, Interval iv, Visit&& visit) {
   const auto& n = vol.dims();
-  const Vec3 sp = vol.spacing(), org = vol.origin();
-  constexpr double inf = std::numeric_limits<double>::infinity();
   double u0[3], du[3], t_next[3], plane[3];
   int dir[3];
   for (int a = 0; a < 3; ++a) {
-    u0[a] = (ray.origin[a] - org[a]) / sp[a];
-    du[a] = ray.dir[a] / sp[a];
-    const double ua = u0[a] + du[a] * iv.t0;
-    dir[a] = du[a] > 0 ? 1 : (du[a] < 0 ? -1 : 0);
-    plane[a] = dir[a] > 0 ? std::floor(ua) + 1 : std::ceil(ua) - 1;
-    t_next[a] = dir[a] ? (plane[a] - u0[a]) / du[a] : inf;
+    const CellWalkAxis w = cell_walk_axis(vol, ray, iv.t0, a);
+    u0[a] = w.u0, du[a] = w.du, plane[a] = w.plane, t_next[a] = w.t_next, dir[a] = w.dir;
   }
   double ta = iv.t0;
   while (ta < iv.t1) {
