@@ -105,8 +105,8 @@ class DualFloatLookup {
 // one, so that skipping a segment changes no byte); lookups, shading
 // (FloatShading: `sampled` lights the slab with the mean of the three
 // gradients, `interpolated` weighs the weighted tables by each sample's
-// terms) and compositing in float. The traversal stays in double, so the
-// segments are the double path's.
+// terms) in float, compositing in double (FrontToBack). The traversal stays
+// in double, so the segments are the double path's.
 template <class Value>
 Rgba march_cells_float(const GridVolume& volume, const Value* values, const DualFloatLookup& table,
                        const FloatShading* shading, bool interpolated, const Ray& ray, const Leap& leap) {
@@ -116,9 +116,9 @@ Rgba march_cells_float(const GridVolume& volume, const Value* values, const Dual
   const std::size_t sy = volume.dims()[0], sz = sy * volume.dims()[1];
   const FloatShading::Vector d = direction(ray);
   SegmentSkip skip(leap, ray, iv.t1);
-  float T = 1, C[3] = {0, 0, 0};
+  FrontToBack acc;
   for_each_cell_segment(volume, ray, iv, [&](const CellSegment& seg) {
-    if (T < leap.termination) return false;
+    if (acc.T < leap.termination) return false;
     if (skip.skipped(seg)) return true;
     const std::size_t offset = seg.cell[0] + sy * seg.cell[1] + sz * seg.cell[2];
     const std::array<float, 8> c = corners_as_float(values + offset, sy, sz);
@@ -145,11 +145,10 @@ Rgba march_cells_float(const GridVolume& volume, const Value* values, const Dual
       for (int k = 0; k < 3; ++k) t[k] = shading->terms(shading->gradient(at[k]), d);
       e = lit_lagrange(t, table.blend(spot, 0), table.blend(spot, 1), table.blend(spot, 2));
     }
-    for (int k = 0; k < 3; ++k) C[k] += T * e[k];
-    T *= 1 - e[3];
+    acc.add(e[0], e[1], e[2], e[3]);
     return true;
   });
-  return {C[0], C[1], C[2], 1 - T};
+  return acc.result();
 }
 
 }  // namespace vri::detail

@@ -8,8 +8,8 @@
 // interpolated by FloatSampler and placed on the table axis once; each slab
 // (Lookup::kSteps steps: FloatLookup for preint1, SecondOrderFloatLookup for
 // preint2) is one float lookup, found one slab ahead so its entries load while
-// the slab before is composited, and the slabs are composited front to back
-// in float. The partial last slab is integrated exactly as on the double path
+// the slab before is composited, and the float slabs are composited front to
+// back in double (FrontToBack, ray_steps.hpp). The partial last slab is integrated exactly as on the double path
 // (exact_slab, cut into kSteps linear sub-slabs). Leaps over empty macro cells
 // and early termination are those of march_uniform_slabs.
 //
@@ -103,17 +103,19 @@ Float4 slab_colour(const Lookup& table, const typename Lookup::Spot& spot, const
 // double path: by the mean of the gradients at their ends (`sampled`) or
 // with their exactly weighted integrals (`interpolated`, exact_weighted_slab,
 // first order for both orders). Each sub-slab's premultiplied (r, g, b,
-// alpha), front to back; all zero when the ray ends on a whole slab. A
+// alpha), front to back; all zero when the ray ends on a whole slab. Unlit,
+// the exact integral as it is, in double; lit, the float shading's. A
 // sub-slab whose scalars `zero` (when given) finds in a zero-opacity range is
 // zero without integrating it: most rays leave the volume through empty
 // space, and the exact integral walks every table bin between the scalars.
-// The GPU backend composites the same values (vulkan/host/ray_setup.cpp).
+// The GPU backend composites the same values, in float
+// (vulkan/host/ray_setup.cpp).
 template <int Steps, class Value>
-std::array<Float4, Steps> last_slabs(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf,
+std::array<SlabRgba, Steps> last_slabs(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf,
                                      const FloatLighting& lighting, const Ray& ray, const Interval& iv,
                                      long long full, double h, FloatSample front,
                                      const ZeroOpacity* zero = nullptr) {
-  std::array<Float4, Steps> out{};
+  std::array<SlabRgba, Steps> out{};
   const double t_rest = iv.t0 + full * Steps * h;
   const double sub = (iv.t1 - t_rest) / Steps;
   if (!(sub > 0)) return out;
@@ -125,15 +127,18 @@ std::array<Float4, Steps> last_slabs(const FloatSampler& sampler, const Value* v
       return Float4{static_cast<float>(e.r), static_cast<float>(e.g), static_cast<float>(e.b),
                     static_cast<float>(e.a)};
     };
-    Float4& v = out[i - 1];
+    const auto slab = [](const Float4& v) { return SlabRgba{v[0], v[1], v[2], v[3]}; };
+    SlabRgba& v = out[i - 1];
     if (zero && zero->over(std::min(front.s, back.s), std::max(front.s, back.s))) {
-      v = Float4{0, 0, 0, 0};
+      v = SlabRgba{};
     } else if (lighting.interpolated()) {
       const SlabWeights w = exact_weighted_slab(tf, front.s, back.s, sub);
-      v = lit_weighted(front.t, back.t, float4(w.front), float4(w.back));
+      v = slab(lit_weighted(front.t, back.t, float4(w.front), float4(w.back)));
+    } else if (lighting.shading) {
+      v = slab(lit_by(lighting.shading->terms(mean(std::array{front.g, back.g}), d),
+                      float4(exact_slab(tf, front.s, back.s, sub))));
     } else {
-      v = float4(exact_slab(tf, front.s, back.s, sub));
-      if (lighting.shading) v = lit_by(lighting.shading->terms(mean(std::array{front.g, back.g}), d), v);
+      v = exact_slab(tf, front.s, back.s, sub);
     }
     front = back;
   }
@@ -146,13 +151,11 @@ std::array<Float4, Steps> last_slabs(const FloatSampler& sampler, const Value* v
 template <int Steps, class Value>
 Rgba finish_float(const FloatSampler& sampler, const Value* values, const DiscreteTf& tf,
                   const FloatLighting& lighting, const Ray& ray, const Interval& iv, long long full, double h,
-                  FloatSample front, const Leap& leap, Float4 C, float T) {
-  if (!(T < static_cast<float>(leap.termination)))
-    for (const Float4& v : last_slabs<Steps>(sampler, values, tf, lighting, ray, iv, full, h, front, leap.zero)) {
-      C += T * Float4{v[0], v[1], v[2], 0};
-      T *= 1 - v[3];
-    }
-  return {C[0], C[1], C[2], 1 - T};
+                  FloatSample front, const Leap& leap, FrontToBack acc) {
+  if (!(acc.T < leap.termination))
+    for (const SlabRgba& v : last_slabs<Steps>(sampler, values, tf, lighting, ray, iv, full, h, front, leap.zero))
+      acc.add(v.r, v.g, v.b, v.a);
+  return acc.result();
 }
 
 template <class Lookup, class Value>
@@ -186,10 +189,7 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Va
     for (int i = 0; i <= steps; ++i) places[i] = p[i].place;
     return table.find(places);
   };
-  const float termination = static_cast<float>(leap.termination);
-  Float4 C = {0, 0, 0, 0};
-  float T = 1;
-  const auto result = [&] { return Rgba{C[0], C[1], C[2], 1 - T}; };
+  FrontToBack acc;
   // Slab k's samples are in hand and its table spot found; slab k + 1's
   // samples are taken and its spot found (its entries start loading) before
   // slab k is composited.
@@ -212,21 +212,20 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Va
         leap.space ? std::clamp(static_cast<long long>(std::ceil((t_check - iv->t0) / (steps * h))), k + 1, full)
                    : full;
     for (; k < stop; ++k) {
-      if (T < termination) return result();
+      if (acc.T < leap.termination) return acc.result();
       // Past the last full slab the back sample stands in for the next slab's.
       Slab next;
       next.fill(p[steps]);
       if (k + 1 < full) fill(next, k + 1);
       const auto following = find(next);
       const Float4 v = slab_colour(table, spot, p, lighting, d);
-      C += T * v;
-      T *= 1 - v[3];
+      acc.add(v[0], v[1], v[2], v[3]);
       p = next;
       spot = following;
     }
   }
-  if (!(owned.begin <= all && all < owned.end)) return result();  // the partial slab is another brick's
-  return finish_float<steps>(sampler, values, tf, lighting, ray, *iv, full, h, p[0].sample, leap, C, T);
+  if (!(owned.begin <= all && all < owned.end)) return acc.result();  // the partial slab is another brick's
+  return finish_float<steps>(sampler, values, tf, lighting, ray, *iv, full, h, p[0].sample, leap, acc);
 }
 
 }  // namespace vri::detail

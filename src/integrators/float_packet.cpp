@@ -27,7 +27,6 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
   Lanes<steps> L{};  // lanes without a ray read cell 0 and entry 0
   const int n = table.size();
   const TableAxis8 axis = axis8(table.axis());
-  const float termination = static_cast<float>(leap.termination);
   unsigned active = enter(L, volume, sampler, rays, h, out);
   for (unsigned m = active; m; m &= m - 1) {
     const int l = __builtin_ctz(m);
@@ -42,10 +41,10 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
   const auto finish = [&](int l) {
     const FloatSample front{L.s[0][l], {L.grad[0][0][l], L.grad[0][1][l], L.grad[0][2][l]}, {L.ta[0][l], L.tb[0][l]}};
     if (!L.partial[l])  // the partial slab is another brick's
-      out[l] = {L.r[l], L.g[l], L.b[l], 1 - L.T[l]};
+      out[l] = L.pixel(l);
     else
       out[l] = finish_float<steps>(sampler, values, tf, lighting, rays[l], L.iv[l], L.full[l], h, front, leap,
-                                 Float4{L.r[l], L.g[l], L.b[l], 0}, L.T[l]);
+                                 L.lane(l));
     active &= ~(1u << l);
   };
   // A lane at its stop: the head of march_float's outer loop (leap, next
@@ -62,7 +61,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     const long long j = leap_target(leap, rays[l], L.iv[l], h, steps, k, full, L.t_check[l]);
     L.k[l] = static_cast<int>(j);
     if (j == full && j > k && L.t_check[l] >= L.iv[l].t1) {
-      out[l] = {L.r[l], L.g[l], L.b[l], 1 - L.T[l]};
+      out[l] = L.pixel(l);
       active &= ~(1u << l);
       return false;
     }
@@ -81,7 +80,6 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
   start_slab(sampler, values, lighting, axis, n, L, active);
   for (unsigned m = active; m; m &= m - 1)
     if (const int l = __builtin_ctz(m); L.k[l] >= L.full[l]) finish(l);
-  const __m256 one = _mm256_set1_ps(1), stop_at = _mm256_set1_ps(termination);
   const __m256i n8 = _mm256_set1_epi32(n);
   while (active) {
     const unsigned before_stop = mask(_mm256_cmpgt_epi32(load(L.stop), load(L.k)));
@@ -94,7 +92,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
         if (const int l = __builtin_ctz(m); L.k[l] == L.full[l]) finish(l);
     }
     // Early termination (the inner loop's check before each slab).
-    const unsigned ended = active & static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(load(L.T), stop_at, _CMP_LT_OQ)));
+    const unsigned ended = active & below8(L, leap.termination);
     for (unsigned m = ended; m; m &= m - 1) finish(__builtin_ctz(m));
     if (!active) break;
     // Samples 1 .. Steps of slab k + 1 of every lane and their places on the
@@ -145,11 +143,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     } else {
       lit_interpolated8(table, lighting, L, v);
     }
-    const __m256 T = load(L.T);
-    store(L.r, _mm256_add_ps(load(L.r), _mm256_mul_ps(T, v[0])));
-    store(L.g, _mm256_add_ps(load(L.g), _mm256_mul_ps(T, v[1])));
-    store(L.b, _mm256_add_ps(load(L.b), _mm256_mul_ps(T, v[2])));
-    store(L.T, _mm256_mul_ps(T, _mm256_sub_ps(one, v[3])));
+    composite8(L, v);
     // Slab k + 1.
     for (int j = 0; j <= steps; ++j) {
       store(L.s[j], next_s[j]), store(L.w[j], next_w[j]), store(L.i[j], next_i[j]);

@@ -21,12 +21,11 @@ namespace {
 
 // What for_each_cell_segment keeps per ray, a lane each, and the lanes'
 // current segment [ta, tb] (cell, local position at ta, length).
-struct DualLanes {
+struct DualLanes : Composited8 {
   alignas(32) double u0[3][kPacket], du[3][kPacket], dir[3][kPacket], plane[3][kPacket], t_next[3][kPacket];
   alignas(32) double ta[kPacket], tb[kPacket], t1[kPacket];
   alignas(32) double local0[3][kPacket], length[kPacket];
   alignas(32) int cell[3][kPacket];
-  alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];
   alignas(32) float d[3][kPacket];  // the direction, for lighting
 };
 
@@ -122,7 +121,7 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
   std::optional<SegmentSkip> skip[kPacket];
   unsigned active = 0;
   const auto finish = [&](int l) {
-    out[l] = {L.r[l], L.g[l], L.b[l], 1 - L.T[l]};
+    out[l] = L.pixel(l);
     active &= ~(1u << l);
   };
   // for_each_cell_segment's set-up (cell_walk_axis), lane by lane; lanes
@@ -238,11 +237,7 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
         for (int k = 0; k < 3; ++k) terms8(*shading, grad[k], d, a[k], b[k]);
         lagrange8(full, middle, back, a, b, e);
       }
-      const __m256 T = load(L.T);
-      store(L.r, _mm256_blendv_ps(load(L.r), _mm256_add_ps(load(L.r), _mm256_mul_ps(T, e[0])), m));
-      store(L.g, _mm256_blendv_ps(load(L.g), _mm256_add_ps(load(L.g), _mm256_mul_ps(T, e[1])), m));
-      store(L.b, _mm256_blendv_ps(load(L.b), _mm256_add_ps(load(L.b), _mm256_mul_ps(T, e[2])), m));
-      store(L.T, _mm256_blendv_ps(T, _mm256_mul_ps(T, _mm256_sub_ps(_mm256_set1_ps(1), e[3])), m));
+      composite8(L, e, &m);
     }
     for (unsigned m = ended & active; m; m &= m - 1) finish(__builtin_ctz(m));
   }

@@ -56,7 +56,6 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
                                                          const FloatShading* shading, const Ray* rays, double h,
                                                          const Leap& leap, Rgba* out) {
   RiemannLanes L{};  // lanes without a ray read cell 0
-  const float termination = static_cast<float>(leap.termination);
   unsigned active = enter(L, volume, sampler, rays, h, out);
   for (unsigned m = active; m; m &= m - 1) {
     const int l = __builtin_ctz(m);
@@ -66,10 +65,10 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
     L.n[l] = owned.end;
   }
   const auto finish = [&](int l) {
-    out[l] = {L.r[l], L.g[l], L.b[l], 1 - L.T[l]};
+    out[l] = L.pixel(l);
     active &= ~(1u << l);
   };
-  const __m256 stop_at = _mm256_set1_ps(termination), one = _mm256_set1_ps(1);
+
   const __m256d hd = _mm256_set1_pd(h);
   while (active) {
     // Lanes at their stop: a leap and the next stop, or the end.
@@ -93,7 +92,7 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
       positive |= static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(h_k, _mm256_setzero_pd(), _CMP_GT_OQ))) << (4 * half);
       hk[half] = _mm256_cvtpd_ps(h_k);
     }
-    const unsigned below = static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(load(L.T), stop_at, _CMP_LT_OQ)));
+    const unsigned below = below8(L, leap.termination);
     for (unsigned m = active & (below | ~positive); m; m &= m - 1) finish(__builtin_ctz(m));
     if (!active) break;
     // Sample k of every lane, classified and composited (riemann_step).
@@ -110,11 +109,7 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
       for (int c = 0; c < 3; ++c) v[c] = _mm256_add_ps(_mm256_mul_ps(v[c], a), b);
     }
     const __m256 e = exp_neg8(_mm256_mul_ps(v[3], _mm256_set_m128(hk[1], hk[0])));
-    const __m256 T = load(L.T), w = _mm256_mul_ps(T, _mm256_sub_ps(one, e));
-    store(L.r, _mm256_add_ps(load(L.r), _mm256_mul_ps(w, v[0])));
-    store(L.g, _mm256_add_ps(load(L.g), _mm256_mul_ps(w, v[1])));
-    store(L.b, _mm256_add_ps(load(L.b), _mm256_mul_ps(w, v[2])));
-    store(L.T, _mm256_mul_ps(T, e));
+    riemann_composite8(L, v, e);
     store(L.k, _mm256_add_epi32(k, _mm256_set1_epi32(1)));
   }
 }

@@ -6,7 +6,7 @@
 // double, as the pre-integrated float paths, float_march.hpp), is interpolated
 // by FloatSampler and classified by FloatTransferFunction; its step's opacity
 // is 1 - exp(-tau h_k) with exp_neg below, and the steps are composited front
-// to back in float. h_k = min(h, t1 - t_k) and the leaps over empty macro
+// to back in double (FrontToBack, ray_steps.hpp). h_k = min(h, t1 - t_k) and the leaps over empty macro
 // cells are taken in double, as on the double path. A pixel differs from the
 // double path's by a few float roundings per step (tests bound it by 1e-4
 // per channel on the bundled scenes); it depends only on its ray.
@@ -28,16 +28,13 @@
 namespace vri::detail {
 
 // One sample of riemann's float sum: its colour (lit: c a + b) weighted by
-// the step's opacity, composited into (C, T).
-inline void riemann_step(const FloatTransferFunction::Sample& v, float h_k, Float4& C, float& T) {
-  const float e = exp_neg(v.tau * h_k);
-  const float w = T * (1 - e);
-  C += w * Float4{v.r, v.g, v.b, 0};
-  T *= e;
+// the step's opacity, composited into acc.
+inline void riemann_step(const FloatTransferFunction::Sample& v, float h_k, FrontToBack& acc) {
+  acc.add_step(v.r, v.g, v.b, exp_neg(v.tau * h_k));
 }
-inline void riemann_step(const FloatTransferFunction::Sample& v, const FloatShading::Terms& lit, float h_k, Float4& C,
-                         float& T) {
-  riemann_step({v.r * lit.a + lit.b, v.g * lit.a + lit.b, v.b * lit.a + lit.b, v.tau}, h_k, C, T);
+inline void riemann_step(const FloatTransferFunction::Sample& v, const FloatShading::Terms& lit, float h_k,
+                         FrontToBack& acc) {
+  riemann_step({v.r * lit.a + lit.b, v.g * lit.a + lit.b, v.b * lit.a + lit.b, v.tau}, h_k, acc);
 }
 
 // Jitter (riemann.hpp): u in [0, 1) from the bits of the ray and the seed,
@@ -95,19 +92,17 @@ Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, 
   const PieceRange owned = owned_pieces(*iv, h, riemann_samples(*iv, h));
   const long long n = owned.end;
   const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
-  const float termination = static_cast<float>(leap.termination);
   const FloatShading::Vector d = direction(ray);
-  Float4 C = {0, 0, 0, 0};
-  float T = 1;
+  FrontToBack acc;
   for (long long k = owned.begin; k < n;) {
     const long long stop = riemann_head(leap, ray, *iv, h, n, k, u);
     for (; k < stop; ++k) {
       const double h_k = std::min(h, iv->t1 - (iv->t0 + k * h));
-      if (T < termination || !(h_k > 0)) return {C[0], C[1], C[2], 1 - T};
+      if (acc.T < leap.termination || !(h_k > 0)) return acc.result();
       // u of the way into the step; only the partial last step is shorter than h.
       const Vec3 at = u0 + (static_cast<double>(k) + (h_k < h ? u * h_k / h : u)) * du;
       if (!shading) {
-        riemann_step(tf(sampler.at(values, at)), static_cast<float>(h_k), C, T);
+        riemann_step(tf(sampler.at(values, at)), static_cast<float>(h_k), acc);
         continue;
       }
       const FloatSampler::Cell cell = sampler.cell(at);
@@ -116,10 +111,10 @@ Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, 
                                                 cell.f);
       const FloatTransferFunction::Sample v = tf(s);
       if (v.tau == 0) continue;  // adds exactly nothing: no gradient needed
-      riemann_step(v, shading->terms(shading->gradient(cell), d), static_cast<float>(h_k), C, T);
+      riemann_step(v, shading->terms(shading->gradient(cell), d), static_cast<float>(h_k), acc);
     }
   }
-  return {C[0], C[1], C[2], 1 - T};
+  return acc.result();
 }
 
 }  // namespace vri::detail

@@ -20,12 +20,23 @@
 
 namespace vri::detail::lanes8 {
 
+// What the lanes composited so far, in double: FrontToBack (ray_steps.hpp)
+// a lane each.
+struct Composited8 {
+  alignas(32) double r[kPacket], g[kPacket], b[kPacket], T[kPacket];
+  Rgba pixel(int l) const { return {r[l], g[l], b[l], 1 - T[l]}; }
+  FrontToBack lane(int l) const {
+    FrontToBack acc;
+    acc.T = T[l], acc.C[0] = r[l], acc.C[1] = g[l], acc.C[2] = b[l];
+    return acc;
+  }
+};
+
 // What every march keeps per ray, a lane each: its sample positions u0 + k du
 // in grid units, its clipped interval and what it composited so far.
-struct RayLanes {
+struct RayLanes : Composited8 {
   alignas(32) double ux[kPacket], uy[kPacket], uz[kPacket];  // u0
   alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
-  alignas(32) float r[kPacket], g[kPacket], b[kPacket], T[kPacket];
   alignas(32) float d[3][kPacket];  // the direction, for lighting
   Interval iv[kPacket];
 };
@@ -70,6 +81,52 @@ struct Lanes : RayLanes {
 };
 
 #define VRI_AVX2 __attribute__((target("avx2"), always_inline)) inline
+
+// Lanes 4 half .. 4 half + 3 of 8 floats as doubles.
+VRI_AVX2 __m256d half_pd(__m256 x, int half) {
+  return _mm256_cvtps_pd(half ? _mm256_extractf128_ps(x, 1) : _mm256_castps256_ps128(x));
+}
+
+// FrontToBack::add of each lane's slab v (premultiplied r, g, b and alpha, in
+// float), for the lanes set in mask m (all when null).
+VRI_AVX2 void composite8(Composited8& L, const __m256 (&v)[4], const __m256* m = nullptr) {
+  for (int half = 0; half < 2; ++half) {
+    const int o = 4 * half;
+    const __m256d T = _mm256_load_pd(L.T + o);
+    __m256d keep = _mm256_setzero_pd();
+    if (m) {
+      const __m256i bits = _mm256_castps_si256(*m);
+      keep = _mm256_castsi256_pd(
+          _mm256_cvtepi32_epi64(half ? _mm256_extracti128_si256(bits, 1) : _mm256_castsi256_si128(bits)));
+    }
+    double* at[4] = {L.r + o, L.g + o, L.b + o, L.T + o};
+    __m256d x[4];
+    for (int c = 0; c < 3; ++c) x[c] = _mm256_add_pd(_mm256_load_pd(at[c]), _mm256_mul_pd(T, half_pd(v[c], half)));
+    x[3] = _mm256_mul_pd(T, _mm256_sub_pd(_mm256_set1_pd(1), half_pd(v[3], half)));
+    for (int c = 0; c < 4; ++c) _mm256_store_pd(at[c], m ? _mm256_blendv_pd(_mm256_load_pd(at[c]), x[c], keep) : x[c]);
+  }
+}
+
+// FrontToBack::add_step of each lane's Riemann step: colour c over a step of
+// transparency e (floats).
+VRI_AVX2 void riemann_composite8(Composited8& L, const __m256 (&c)[4], __m256 e) {
+  for (int half = 0; half < 2; ++half) {
+    const int o = 4 * half;
+    const __m256d T = _mm256_load_pd(L.T + o), ed = half_pd(e, half);
+    const __m256d w = _mm256_mul_pd(T, _mm256_sub_pd(_mm256_set1_pd(1), ed));
+    double* C[3] = {L.r + o, L.g + o, L.b + o};
+    for (int k = 0; k < 3; ++k)
+      _mm256_store_pd(C[k], _mm256_add_pd(_mm256_load_pd(C[k]), _mm256_mul_pd(w, half_pd(c[k], half))));
+    _mm256_store_pd(L.T + o, _mm256_mul_pd(T, ed));
+  }
+}
+
+// The lanes whose transmittance is below `termination`.
+VRI_AVX2 unsigned below8(const Composited8& L, double termination) {
+  const __m256d t = _mm256_set1_pd(termination);
+  return static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(_mm256_load_pd(L.T), t, _CMP_LT_OQ))) |
+         static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(_mm256_load_pd(L.T + 4), t, _CMP_LT_OQ))) << 4;
+}
 
 // One axis of FloatSampler::at for the 8 lanes' samples k: the cell
 // min(trunc(clamp(u0 + k du, 0, top)), last) and the float fraction in it,

@@ -56,10 +56,17 @@ const TransferFunction kTf({{10, 0.2, 0.3, 0.9, 0.0},
                             {60.4, 0.3, 1.0, 0.3, 0.05},
                             {90, 1.0, 0.2, 0.6, 0.4}});
 
+// A brick takes the whole ray's samples, slabs and cell pieces, and every
+// path composites in double (FrontToBack, src/integrators/ray_steps.hpp): the
+// bricks composited give the whole ray to a few double roundings (1e-12;
+// float compositing missed 1e-6 on fine steps: 7e-6 on engine, riemann at
+// h = 0.05). `guaranteed` takes its own step decisions in each brick: its
+// tolerance's share (1e-6 at 1e-4).
 struct Case {
   std::string name;
   MethodSpec method;
   bool lit = false;
+  double bound = 1e-12;
 };
 
 std::vector<Case> cases() {
@@ -89,7 +96,9 @@ std::vector<Case> cases() {
           {"preint2", m("preint2", 0.6)},
           {"preint2_double", m("preint2", 0.9, false)},
           {"preint2_dual", m("preint2-dual")},
-          {"adaptive_guaranteed", guaranteed}};
+          {"riemann_fine", m("riemann", 0.02)},
+          {"preint1_fine", m("preint1", 0.05)},
+          {"adaptive_guaranteed", guaranteed, false, 1e-6}};
 }
 
 std::vector<Ray> rays(const GridVolume& v) {
@@ -150,8 +159,7 @@ TEST(BrickVolume, BricksCompositedFrontToBackGiveTheWholeRay) {
         for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(C[k] - ref[k]));
         worst = std::max(worst, std::abs((1 - T) - ref[3]));
       }
-      // Float paths composite in float: a few roundings per brick.
-      EXPECT_LT(worst, 1e-6) << c.name << " on " << n << " bricks";
+      EXPECT_LT(worst, c.bound) << c.name << " on " << n << " bricks";
     }
   }
 }

@@ -83,7 +83,7 @@ void expect_guaranteed_within_tolerance(Scene scene) {
 }
 
 // A float volume of 41^3 (three parts), preint1's 256^2 table (four parts),
-// preint2's 40^3 (four), and 96 x 80 rays of up to 96 bytes (three chunks).
+// preint2's 40^3 (four), and 96 x 80 rays of up to 128 bytes (four chunks).
 TEST(SplitArrays, UnlitScenesMatchTheCpu) {
   const Scene scene = parse_scene(R"({"volume": {"builtin": "marschner_lobb", "dims": [41, 41, 41]},
     "transfer_function": {"points": [[0, 0, 0, 0, 0], [0.3, 0.2, 0.5, 1, 0.05], [0.6, 1, 0.8, 0.2, 0.2],

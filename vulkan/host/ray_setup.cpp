@@ -131,12 +131,15 @@ std::vector<float> slab_rays(int steps, const Camera& camera, const GridVolume& 
           put(r + 6 + a, du[a], 3);
         }
         r[12] = count_bits(full);
-        put_direction(r + 13 + 4 * steps, ray);
+        put_direction(r + 13 + 8 * steps, ray);
         const detail::FloatSample front = detail::sample_at(sampler, values.data(), lighting, detail::direction(ray),
                                                             u0 + static_cast<double>(full * steps) * du);
         const auto put_slabs = [&](const auto& slabs) {
-          for (std::size_t i = 0; i < slabs.size(); ++i)
-            for (int c = 0; c < 4; ++c) r[13 + 4 * i + c] = slabs[i][c];
+          for (std::size_t i = 0; i < slabs.size(); ++i) {
+            const SlabRgba& s = slabs[i];
+            const double v[4] = {s.r, s.g, s.b, s.a};
+            for (int c = 0; c < 4; ++c) put(r + 13 + 4 * i + c, v[c], 4 * steps);
+          }
         };
         if (steps == 1) put_slabs(detail::last_slabs<1>(sampler, values.data(), tf, lighting, ray, *iv, full, h, front));
         else put_slabs(detail::last_slabs<2>(sampler, values.data(), tf, lighting, ray, *iv, full, h, front));

@@ -38,9 +38,10 @@ std::vector<float> entry_rays(const Camera& camera, const GridVolume& volume, in
 // floats (vulkan/shaders/preint.comp): u0 hi x3, lo x3; du hi x3, lo x3; the
 // number of whole slabs (int bits; -1: the ray misses the volume); the
 // partial last slab's `steps` sub-slabs, each (r, g, b, alpha), integrated
-// exactly and lit as on the CPU (last_slabs, src/integrators/float_march.hpp);
-// the direction in float.
-constexpr int slab_ray_floats(int steps) { return 16 + 4 * steps; }
+// exactly and lit as on the CPU (last_slabs, src/integrators/float_march.hpp),
+// hi x 4 steps, then lo x 4 steps (the CPU composites them in double); the
+// direction in float.
+constexpr int slab_ray_floats(int steps) { return 16 + 8 * steps; }
 
 std::vector<float> slab_rays(int steps, const Camera& camera, const GridVolume& volume, const DiscreteTf& tf,
                              const detail::FloatLighting& lighting, double h, int threads);

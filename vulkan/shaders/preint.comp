@@ -2,7 +2,7 @@
 // preint1 (STEPS 1) and preint2 (STEPS 2) on the GPU, as the CPU's float
 // path (src/integrators/float_march.hpp): samples at u0 + i du; each slab of
 // STEPS steps is one lookup of the pre-integration table, composited front
-// to back, C += T c, T *= 1 - alpha.
+// to back, C += T c, T *= 1 - alpha (in double-float, front_to_back.glsl).
 //   STEPS 1 (SPEC §9 preint1; Engel, Kraus & Ertl 2001): the slab between
 //     two samples, the table at (s_f, s_b).
 //   STEPS 2 (SPEC §9 preint2; El Hajjar et al. 2008, eqs. 2-3): the slab
@@ -39,7 +39,7 @@ SPLIT_INPUT(vec4, weighted2, 12, 4u, 3)
 SPLIT_INPUT(float, gradients, 16, 2u, 4)  // lit only
 // Per ray (ray_setup.hpp, slab_rays): u0 (hi x3, lo x3), du (hi x3, lo x3),
 // the number of whole slabs (int bits), the last STEPS sub-slabs'
-// premultiplied (r, g, b, alpha), the direction (x, y, z).
+// premultiplied (r, g, b, alpha) hi, then lo, the direction (x, y, z).
 layout(std430, binding = 20) readonly buffer Rays { float r[]; } rays;
 layout(std430, binding = 21) readonly buffer EmptyCells { uint bits[]; } empty_cells;
 layout(std430, binding = 22) writeonly buffer Image { vec4 px[]; } image;
@@ -47,12 +47,13 @@ layout(std430, binding = 22) writeonly buffer Image { vec4 px[]; } image;
 vec4 entry_of(int which, uint e) { return which == 0 ? table_at(e) : which == 1 ? weighted1_at(e) : weighted2_at(e); }
 
 #include "double_float.glsl"
+#include "front_to_back.glsl"
 #include "exp_neg.glsl"
 #include "grid_sampler.glsl"
 #include "table_lookup.glsl"
 #include "shading.glsl"
 
-const uint kRayFloats = 16u + 4u * STEPS;
+const uint kRayFloats = 16u + 8u * STEPS;
 
 DF u0[3], du[3];
 vec3 d;
@@ -127,11 +128,10 @@ void main() {
     u0[a] = DF(rays.r[r + a], rays.r[r + 3 + a]);
     du[a] = DF(rays.r[r + 6 + a], rays.r[r + 9 + a]);
   }
-  const uint tail = 13u, direction = tail + 4u * STEPS;
+  const uint tail = 13u, direction = tail + 8u * STEPS;
   d = vec3(rays.r[r + direction], rays.r[r + direction + 1u], rays.r[r + direction + 2u]);
   const int full = floatBitsToInt(rays.r[r + 12u]);
-  precise vec4 C = vec4(0.0);
-  precise float T = 1.0;
+  FrontToBack acc = ftb_start();
   if (full >= 0) {  // -1: the ray misses the volume
     // Each turn takes the samples of one slab after `front` and composites
     // it - or, where the front lies in an empty macro cell, leaps: the slabs
@@ -141,7 +141,7 @@ void main() {
     // same places in the code in every turn (SIMD lanes stay together).
     Sample front = sample_at(0, true);
     for (int k = 0; k < full;) {  // `front` is slab k's
-      if (T < p.termination) break;
+      if (ftb_below(acc, p.termination)) break;
       int to = k + 1;
       bool composite = true;
       if (front.exit >= 0.0) {
@@ -156,17 +156,19 @@ void main() {
       const Sample middle = sample_at(2 * to - 1, false), back = sample_at(2 * to, true);
       const vec4 v = composite ? slab(front, middle, back) : vec4(0.0);
 #endif
-      C += T * v;
-      T *= 1.0 - v.a;
+      ftb_add(acc, v);
       front = back;
       k = to;
     }
-    if (!(T < p.termination))
+    if (!ftb_below(acc, p.termination))
       for (uint k = 0u; k < STEPS; ++k) {
-        const uint at = r + tail + 4u * k;
-        C += T * vec4(rays.r[at], rays.r[at + 1u], rays.r[at + 2u], 0.0);
-        T *= 1.0 - rays.r[at + 3u];
+        DF v[4];
+        for (uint c = 0u; c < 4u; ++c) {
+          const uint at = r + tail + 4u * k + c;
+          v[c] = DF(rays.r[at], rays.r[at + 4u * STEPS]);
+        }
+        ftb_add_df(acc, v);
       }
   }
-  image.px[pixel] = vec4(C.rgb, 1.0 - T);
+  image.px[pixel] = ftb_pixel(acc);
 }

@@ -48,6 +48,7 @@ layout(std430, binding = 22) writeonly buffer Image { vec4 px[]; } image;
 vec4 entry_of(int which, uint e) { return which == 0 ? table_at(e) : which == 1 ? weighted1_at(e) : weighted2_at(e); }
 
 #include "double_float.glsl"
+#include "front_to_back.glsl"
 #include "exp_neg.glsl"
 #include "grid_sampler.glsl"
 #include "table_lookup.glsl"
@@ -78,11 +79,10 @@ void main() {
   }
   const DF t_end = DF(rays.r[r + 12u], rays.r[r + 13u]);
   d = vec3(rays.r[r + 14u], rays.r[r + 15u], rays.r[r + 16u]);
-  precise vec3 C = vec3(0.0);
-  precise float T = 1.0;
+  FrontToBack acc = ftb_start();
   CellWalk w = walk_start();
   while (t_end.hi > 0.0 && df_less(w.ta, t_end)) {
-    if (T < p.termination) break;
+    if (ftb_below(acc, p.termination)) break;
     const DF ta = w.ta, tb = walk_next(w, t_end);
     w.ta = tb;
     if (df_less(ta, tb)) {
@@ -126,12 +126,11 @@ void main() {
           precise vec3 c = ((tf.a * d_f + tm2.a * middle.rgb) + tb2.a * back.rgb) + specular;
           v = vec4(c, full.a);
         }
-        C += T * v.rgb;
-        T *= 1.0 - v.a;
+        ftb_add(acc, v);
       } else {
         walk_leap(w, index, t_end);
       }
     }
   }
-  image.px[pixel] = vec4(C, 1.0 - T);
+  image.px[pixel] = ftb_pixel(acc);
 }

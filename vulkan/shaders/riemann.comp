@@ -1,7 +1,7 @@
 #version 450
 // riemann on the GPU (SPEC §9; the CPU's float path, src/integrators/float_riemann.hpp):
 // one invocation per pixel sums the ray's samples front to back,
-//   C += T (1 - exp(-tau_k h_k)) c_k,  T *= exp(-tau_k h_k),
+//   C += T (1 - exp(-tau_k h_k)) c_k,  T *= exp(-tau_k h_k)  (front_to_back.glsl),
 // c_k lit (SPEC §5, shading.glsl: c a + b) when p.lit is 1,
 // sample k at u0 + (k + o) du in grid units (o the jitter's fraction, 0
 // without; the partial last step's own o and h_k), until the ray ends or T
@@ -37,6 +37,7 @@ layout(std430, binding = 11) readonly buffer EmptyCells { uint bits[]; } empty_c
 layout(std430, binding = 12) writeonly buffer Image { vec4 px[]; } image;
 
 #include "double_float.glsl"
+#include "front_to_back.glsl"
 #include "exp_neg.glsl"
 #include "grid_sampler.glsl"
 #include "transfer_function.glsl"
@@ -59,10 +60,9 @@ void main() {
   const DF o = DF(rays.r[b + 12u], rays.r[b + 13u]), o_last = DF(rays.r[b + 14u], rays.r[b + 15u]);
   const float h_last = rays.r[b + 16u];
   const vec3 d = vec3(rays.r[b + 18u], rays.r[b + 19u], rays.r[b + 20u]);
-  precise vec3 C = vec3(0.0);
-  precise float T = 1.0;
+  FrontToBack acc = ftb_start();
   for (int k = 0; k < n; ++k) {
-    if (T < p.termination) break;
+    if (ftb_below(acc, p.termination)) break;
     const bool last = k == n - 1;
     const DF t = df_two_sum(float(k), last ? o_last.hi : o.hi);
     const DF at_k = df_add(t, DF(0.0, last ? o_last.lo : o.lo));
@@ -83,10 +83,7 @@ void main() {
       v.rgb = c;
     }
     const float h_k = last ? h_last : p.h;
-    precise float e = exp_neg(v.w * h_k);
-    precise float w = T * (1.0 - e);
-    C += w * v.rgb;
-    T *= e;
+    ftb_add_step(acc, v.rgb, exp_neg(v.w * h_k));
   }
-  image.px[pixel] = vec4(C, 1.0 - T);
+  image.px[pixel] = ftb_pixel(acc);
 }

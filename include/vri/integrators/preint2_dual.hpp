@@ -22,8 +22,8 @@
 // Fast path (fast_path.hpp): segments in runs of empty macro cells (classified
 // for second-order entries) are not sampled, which changes no byte, and
 // `termination` stops a ray once T falls below it. `float_math` (the
-// default) samples, looks up, shades and composites in float, unlit and lit
-// (dual_march.hpp), on packets of 8 rays where the CPU has AVX2
+// default) samples, looks up and shades in float and composites in double,
+// unlit and lit (dual_march.hpp), on packets of 8 rays where the CPU has AVX2
 // (float_packet_dual.cpp: the same bytes, faster, leaping over empty runs).
 #include <memory>
 #include <optional>
