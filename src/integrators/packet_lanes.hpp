@@ -121,7 +121,7 @@ VRI_AVX2 void riemann_composite8(Composited8& L, const __m256 (&c)[4], __m256 e)
   }
 }
 
-// The lanes whose transmittance is below `termination`.
+// The lanes whose transmittance is below `termination` (none when it is 0: T >= 0).
 VRI_AVX2 unsigned below8(const Composited8& L, double termination) {
   const __m256d t = _mm256_set1_pd(termination);
   return static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(_mm256_load_pd(L.T), t, _CMP_LT_OQ))) |
