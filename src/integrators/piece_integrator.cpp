@@ -72,12 +72,16 @@ void PieceIntegrator::integrate(const Cubic& s, double len, double error_per_len
         out[2] = (std::clamp(seg.ref.b + seg.slope.b * ds, 0.0, 1.0) * terms.a + terms.b) * w;
       };
       // Adaptive Gauss-Kronrod, iterative, depth first. The error allowed on
-      // the unattenuated integral is the piece's share of the budget over T,
-      // and never below what rounding leaves of the panel's own value
-      // (kRelative of it): an absolute target alone is out of reach when the
-      // integrand is huge (specular 1e10) and would subdivide to the depth cap.
+      // the unattenuated integral is the piece's share of the budget (not
+      // over T, which would be enough: the panels would then depend on the
+      // transmittance in front, which a brick of a distributed render does
+      // not know, and its image leave one process's by up to the tolerance,
+      // SPEC §11), and never below what rounding leaves of the panel's own
+      // value (kRelative of it): an absolute target alone is out of reach
+      // when the integrand is huge (specular 1e10) and would subdivide to the
+      // depth cap.
       const double T_in = acc.T;
-      const double density = error_per_length / T_in;
+      const double density = error_per_length;
       constexpr double kRelative = 1e-12;
       struct Item {
         double a, b;

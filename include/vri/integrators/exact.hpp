@@ -8,9 +8,12 @@
 //   C = sum_pieces T(t_a) * int c(s(t)) tau(t) exp(-int_{t_a}^t tau) dt
 // has a smooth (entire) integrand and is computed by adaptive Gauss-Kronrod
 // (7/15) with an absolute error budget of tolerance * (piece length / ray
-// length), so the whole ray's colour error stays within `tolerance`.
-// The ray stops once the transmittance falls below tolerance/10 (divided by
-// the brightest lit colour when lighting is on), which bounds what is dropped.
+// length) on each piece's integral before T(t_a) multiplies it (so the
+// panels do not depend on T, and a brick of a distributed render takes the
+// whole ray's), and the whole ray's colour error stays within `tolerance`.
+// The ray stops once the transmittance falls below min(tolerance/10, 1e-7)
+// (divided by the brightest lit colour when lighting is on), which bounds
+// what is dropped.
 // With lighting (SPEC §5), c is replaced by c_lit evaluated continuously; the
 // pieces are also split where N.d changes sign (the kink of |N.d|): N.d is the
 // interpolated gradient dotted with d, a cubic inside a cell.
