@@ -7,10 +7,8 @@
 # 1e-7, beside one process's adaptive.
 set -euo pipefail
 build=${1:-build} ranks=${2:-4}
-vri=$(realpath "$build/vri")
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-largest() { "$vri" compare "$1" "$2" --tolerance 1 | awk 'NR > 1 {print $4}' | sort -g | tail -1; }
+source "$(dirname "$0")/distributed_common.sh"
+distributed_setup "$build"
 echo "# $(date -u '+%F %T') UTC, $(nproc) cores, $ranks ranks, one thread a rank"
 echo "| scene | method | largest difference from one process |"
 echo "|---|---|---|"

@@ -9,10 +9,8 @@
 # largest of the table.
 set -euo pipefail
 build=${1:-build} size=${2:-256}
-vri=$(realpath "$build/vri")
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-largest() { "$vri" compare "$1" "$2" --tolerance 1 | awk 'NR > 1 {print $4}' | sort -g | tail -1; }
+source "$(dirname "$0")/distributed_common.sh"
+distributed_setup "$build"
 echo "# $(date -u '+%F %T') UTC, $(nproc) cores, ${size}x${size}, one thread a rank," \
      "Open MPI $(mpirun --version | head -1 | awk '{print $NF}')"
 echo "| scene | method | 2 ranks | 3 ranks | 4 ranks | 8 ranks |"
