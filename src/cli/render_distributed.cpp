@@ -63,8 +63,7 @@ int run_render_distributed(const DistributedJob& job) {
         .region =
             [&](std::array<int, 3> dims, const MethodSpec& method) {
               MethodSpec m = method;
-              if (job.flags.overrides.method) m.name = *job.flags.overrides.method;
-              if (job.flags.overrides.step) m.step = *job.flags.overrides.step;
+              apply_method_overrides(m, job.flags.overrides);
               const distributed::KdBricks bricks(dims, world.size());
               return distributed::brick_region(bricks.brick(world.rank()), dims, distributed::ghost_points(m));
             },

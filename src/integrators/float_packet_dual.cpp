@@ -237,7 +237,9 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
         for (int k = 0; k < 3; ++k) terms8(*shading, grad[k], d, a[k], b[k]);
         lagrange8(full, middle, back, a, b, e);
       }
-      composite8(L, e, &m);
+      // Lanes not sampled composite zeros: C + T 0 = C and T (1 - 0) = T exactly.
+      for (__m256& x : e) x = _mm256_and_ps(x, m);
+      composite8(L, e);
     }
     for (unsigned m = ended & active; m; m &= m - 1) finish(__builtin_ctz(m));
   }

@@ -88,22 +88,15 @@ VRI_AVX2 __m256d half_pd(__m256 x, int half) {
 }
 
 // FrontToBack::add of each lane's slab v (premultiplied r, g, b and alpha, in
-// float), for the lanes set in mask m (all when null).
-VRI_AVX2 void composite8(Composited8& L, const __m256 (&v)[4], const __m256* m = nullptr) {
+// float).
+VRI_AVX2 void composite8(Composited8& L, const __m256 (&v)[4]) {
   for (int half = 0; half < 2; ++half) {
     const int o = 4 * half;
     const __m256d T = _mm256_load_pd(L.T + o);
-    __m256d keep = _mm256_setzero_pd();
-    if (m) {
-      const __m256i bits = _mm256_castps_si256(*m);
-      keep = _mm256_castsi256_pd(
-          _mm256_cvtepi32_epi64(half ? _mm256_extracti128_si256(bits, 1) : _mm256_castsi256_si128(bits)));
-    }
-    double* at[4] = {L.r + o, L.g + o, L.b + o, L.T + o};
-    __m256d x[4];
-    for (int c = 0; c < 3; ++c) x[c] = _mm256_add_pd(_mm256_load_pd(at[c]), _mm256_mul_pd(T, half_pd(v[c], half)));
-    x[3] = _mm256_mul_pd(T, _mm256_sub_pd(_mm256_set1_pd(1), half_pd(v[3], half)));
-    for (int c = 0; c < 4; ++c) _mm256_store_pd(at[c], m ? _mm256_blendv_pd(_mm256_load_pd(at[c]), x[c], keep) : x[c]);
+    double* C[3] = {L.r + o, L.g + o, L.b + o};
+    for (int c = 0; c < 3; ++c)
+      _mm256_store_pd(C[c], _mm256_add_pd(_mm256_load_pd(C[c]), _mm256_mul_pd(T, half_pd(v[c], half))));
+    _mm256_store_pd(L.T + o, _mm256_mul_pd(T, _mm256_sub_pd(_mm256_set1_pd(1), half_pd(v[3], half))));
   }
 }
 

@@ -4,8 +4,7 @@
 
 namespace vri {
 
-void apply_overrides(Scene& scene, const SceneOverrides& o) {
-  MethodSpec& m = scene.method;
+void apply_method_overrides(MethodSpec& m, const SceneOverrides& o) {
   if (o.method && *o.method != m.name) {
     m.name = *o.method;
     m.table_size_given = false;
@@ -17,8 +16,6 @@ void apply_overrides(Scene& scene, const SceneOverrides& o) {
   if (o.step) m.step = *o.step;
   if (o.tolerance) m.tolerance = *o.tolerance;
   if (o.iterations) m.iterations = *o.iterations;
-  if (o.width) scene.camera.width = *o.width;
-  if (o.height) scene.camera.height = *o.height;
   if (o.h0) m.h0 = *o.h0;
   if (o.hmin) m.hmin = *o.hmin;
   if (o.hmax) m.hmax = *o.hmax;
@@ -29,6 +26,12 @@ void apply_overrides(Scene& scene, const SceneOverrides& o) {
   if (o.max_samples) m.max_samples = *o.max_samples;
   if (o.max_work) m.max_work = *o.max_work;
   if (o.jitter) m.jitter = *o.jitter;
+}
+
+void apply_overrides(Scene& scene, const SceneOverrides& o) {
+  apply_method_overrides(scene.method, o);
+  if (o.width) scene.camera.width = *o.width;
+  if (o.height) scene.camera.height = *o.height;
   if (o.fit.value_or(false)) {
     const auto [lo, hi] = bounds(scene.volume);
     scene.camera = frame_box(lo, hi, scene.camera);

@@ -27,4 +27,9 @@ struct SceneOverrides {
 // keeps its default, 64) unless table_size is given too.
 void apply_overrides(Scene& scene, const SceneOverrides& overrides);
 
+// The method's part of apply_overrides, alone: what a rank of a distributed
+// render applies to the scene's method to choose its ghost layer while the
+// scene is still loading.
+void apply_method_overrides(MethodSpec& method, const SceneOverrides& overrides);
+
 }  // namespace vri
