@@ -92,7 +92,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
         if (const int l = __builtin_ctz(m); L.k[l] == L.full[l]) finish(l);
     }
     // Early termination (the inner loop's check before each slab).
-    const unsigned ended = leap.termination > 0 ? active & below8(L, leap.termination) : 0;
+    const unsigned ended = active & below8(L, leap.termination);
     for (unsigned m = ended; m; m &= m - 1) finish(__builtin_ctz(m));
     if (!active) break;
     // Samples 1 .. Steps of slab k + 1 of every lane and their places on the

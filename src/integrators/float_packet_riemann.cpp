@@ -92,7 +92,7 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
       positive |= static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(h_k, _mm256_setzero_pd(), _CMP_GT_OQ))) << (4 * half);
       hk[half] = _mm256_cvtpd_ps(h_k);
     }
-    const unsigned below = leap.termination > 0 ? below8(L, leap.termination) : 0;
+    const unsigned below = below8(L, leap.termination);
     for (unsigned m = active & (below | ~positive); m; m &= m - 1) finish(__builtin_ctz(m));
     if (!active) break;
     // Sample k of every lane, classified and composited (riemann_step).

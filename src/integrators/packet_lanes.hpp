@@ -114,8 +114,10 @@ VRI_AVX2 void riemann_composite8(Composited8& L, const __m256 (&c)[4], __m256 e)
   }
 }
 
-// The lanes whose transmittance is below `termination` (none when it is 0: T >= 0).
+// The lanes whose transmittance is below `termination` (none when it is 0:
+// T >= 0, and the compares are skipped).
 VRI_AVX2 unsigned below8(const Composited8& L, double termination) {
+  if (!(termination > 0)) return 0;
   const __m256d t = _mm256_set1_pd(termination);
   return static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(_mm256_load_pd(L.T), t, _CMP_LT_OQ))) |
          static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(_mm256_load_pd(L.T + 4), t, _CMP_LT_OQ))) << 4;

@@ -81,7 +81,6 @@ void PieceIntegrator::integrate(const Cubic& s, double len, double error_per_len
       // when the integrand is huge (specular 1e10) and would subdivide to the
       // depth cap.
       const double T_in = acc.T;
-      const double density = error_per_length;
       constexpr double kRelative = 1e-12;
       struct Item {
         double a, b;
@@ -100,7 +99,7 @@ void PieceIntegrator::integrate(const Cubic& s, double len, double error_per_len
                       "with the environment variable " + std::string(kMaxPanelsVariable));
         const double err = gk15::apply<3>(f, it.a, it.b, k);
         const double size = std::max({std::abs(k[0]), std::abs(k[1]), std::abs(k[2])});
-        if (err <= std::max(density * (it.b - it.a), kRelative * size) || it.depth >= 40) {
+        if (err <= std::max(error_per_length * (it.b - it.a), kRelative * size) || it.depth >= 40) {
           for (int c = 0; c < 3; ++c) sum[c] += k[c];
         } else {
           const double m = 0.5 * (it.a + it.b);

@@ -19,20 +19,19 @@ DF df_mul_f(DF a, float b) {
   return df_fast_two_sum(p.hi, lo);
 }
 
-// The slab's premultiplied colour v.rgb and opacity v.a: C += T c, T *= 1 - alpha.
-void ftb_add(inout FrontToBack acc, vec4 v) {
-  acc.r = df_add(acc.r, df_mul_f(acc.T, v.r));
-  acc.g = df_add(acc.g, df_mul_f(acc.T, v.g));
-  acc.b = df_add(acc.b, df_mul_f(acc.T, v.b));
-  acc.T = df_mul(acc.T, df_two_sum(1.0, -v.a));
-}
-
-// As ftb_add, for a slab given in double-float (r, g, b, alpha).
+// A slab's premultiplied colour and opacity (r, g, b, alpha) in double-float:
+// C += T c, T *= 1 - alpha.
 void ftb_add_df(inout FrontToBack acc, DF v[4]) {
   acc.r = df_add(acc.r, df_mul(acc.T, v[0]));
   acc.g = df_add(acc.g, df_mul(acc.T, v[1]));
   acc.b = df_add(acc.b, df_mul(acc.T, v[2]));
   acc.T = df_mul(acc.T, df_sub(DF(1.0, 0.0), v[3]));
+}
+
+// The same for a float slab v.
+void ftb_add(inout FrontToBack acc, vec4 v) {
+  DF d[4] = DF[4](DF(v.r, 0.0), DF(v.g, 0.0), DF(v.b, 0.0), DF(v.a, 0.0));
+  ftb_add_df(acc, d);
 }
 
 // A Riemann step: colour c over a step of transparency e: w = T (1 - e), C += w c, T *= e.
