@@ -252,7 +252,7 @@ TEST(FastPath, FloatPathIsWithin1e4OfTheDoublePath) {
 }
 
 // The packets of 8 rays of riemann, preint1, preint2 and unlit preint2-dual
-// (float_packet.hpp; render hands each tile row to integrate_row) against
+// (float_packet.hpp; render hands 4 x 2 blocks of a tile to integrate_row) against
 // integrate, ray by ray: the same bytes, with skipping (preint2-dual's packets
 // leap where its scalar march walks), with and without termination. Skipped where
 // there are no packets (both would be the scalar march): a build with

@@ -7,6 +7,7 @@
 
 #include "test_support.hpp"
 #include "vri/integrators/exact.hpp"
+#include "vri/integrators/preint1.hpp"
 #include "vri/integrators/riemann.hpp"
 #include "vri/scene/scene.hpp"
 
@@ -31,6 +32,26 @@ TEST(Renderer, SameBytesWithAnyThreadCountAndTileSize) {
       ASSERT_EQ(0, std::memcmp(one.data().data(), other.data().data(), one.data().size() * sizeof(float)))
           << integ->name() << " threads " << opt.threads;
     }
+  }
+}
+
+// The renderer hands rays over in blocks of 4 x 2 pixels (odd tile and image
+// sizes leave partial blocks): each pixel still gets its own ray's integral.
+// preint1 marches them as packets of 8 where the CPU has AVX2.
+TEST(Renderer, EveryPixelGetsItsOwnRaysIntegral) {
+  Scene scene = load_scene(test::source_path("scenes/neghip.json"));
+  scene.camera.width = 29;
+  scene.camera.height = 19;
+  const Camera cam(scene.camera);
+  const Preint1Integrator preint1(scene.grid(), scene.transfer_function, 1.0, 256, "incremental");
+  for (const int tile : {16, 7, 5, 1}) {
+    const Image img = render(cam, preint1, {.threads = 2, .tile_size = tile});
+    for (int y = 0; y < 19; ++y)
+      for (int x = 0; x < 29; ++x) {
+        const Rgba want = preint1.integrate(cam.ray(x, y));
+        for (int c = 0; c < 4; ++c)
+          ASSERT_EQ(img.pixel(x, y)[c], static_cast<float>(want[c])) << "tile " << tile << " pixel " << x << " " << y;
+      }
   }
 }
 

@@ -16,8 +16,9 @@ class Integrator {
   // Premultiplied (C_r, C_g, C_b, alpha) of the ray, before any background.
   virtual Rgba integrate(const Ray& ray) const = 0;
   // out[i] = integrate(rays[i]) for i < n, the same bytes; the renderer hands
-  // over a tile row at a time so a method may march neighbouring rays together
-  // (preint1's packets, integrators/float_packet.hpp).
+  // over two rows of a tile at a time, in blocks of 4 x 2 pixels, so a method
+  // may march neighbouring rays together (the packets of 8,
+  // integrators/float_packet.hpp).
   virtual void integrate_row(const Ray* rays, int n, Rgba* out) const {
     for (int i = 0; i < n; ++i) out[i] = integrate(rays[i]);
   }
