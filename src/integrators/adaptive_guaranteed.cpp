@@ -69,6 +69,7 @@ GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& vol
   if (shader_) hmax_ = std::min(hmax_, 0.25 * volume.voxel_unit());
   hfloor_ = 1e-4 * volume.voxel_unit();
   splitter_ = std::make_unique<TfPieceSplitter>(tf);
+  if (const EmptySpace* space = skipping_.space()) transparent_.emplace(volume, *space, zero_bins_, margin_);
 }
 
 GuaranteedAdaptiveIntegrator::~GuaranteedAdaptiveIntegrator() = default;
@@ -148,7 +149,8 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
   const auto walk_cell = [&](const CellSegment& cs) {
     // A cell whose corners' range (with the macro cells' margin for
     // rounding) has zero extinction is transparent on every piece: skipped
-    // before its cubic is built.
+    // before its cubic is built (on its bit where the cells were classified).
+    if (transparent_ && transparent_->transparent(cs.cell[0], cs.cell[1], cs.cell[2])) return T > cutoff;
     const std::array<float, 8> c = corners_as_float(values + volume_.index(cs.cell[0], cs.cell[1], cs.cell[2]), sy, sz);
     const std::array<double, 8> corners = {c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]};
     const auto [lo, hi] = std::minmax_element(corners.begin(), corners.end());

@@ -33,7 +33,8 @@
 // leaps over the rest, whose pieces are transparent and take no samples
 // anyway: the image is the same up to the rounding of a run's first face. In
 // the runs, a cell whose corners' range has no extinction is skipped before
-// its cubic is built.
+// its cubic is built; those cells are found once per transfer function
+// (volume/transparent_cells.hpp), so the walk skips them on one bit.
 #include <memory>
 #include <optional>
 
@@ -43,6 +44,7 @@
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
+#include "vri/volume/transparent_cells.hpp"
 
 namespace vri {
 
@@ -71,6 +73,9 @@ class GuaranteedAdaptiveIntegrator final : public ErrorEstimatingIntegrator {
   double margin_;              // EmptySpace's margin: rounding of interpolated scalars
   ZeroOpacityBins zero_bins_;  // zero_ in O(1) over the volume's range, for the cell test
   detail::Skipping skipping_;  // the empty macro cells, against tf
+  // The cells of the non-empty macro cells that zero_bins_ finds
+  // transparent, classified once (with skipping on).
+  std::optional<TransparentCells> transparent_;
 };
 
 }  // namespace vri

@@ -38,6 +38,7 @@ class EmptySpace {
  public:
   EmptySpace(const MacroCells& cells, const ZeroOpacity& zero);
 
+  const MacroCells& cells() const { return cells_; }
   bool empty(std::size_t index) const { return empty_[index] != 0; }
   std::size_t empty_count() const;
 
