@@ -277,6 +277,57 @@ TEST(EmptySpace, OccupiedRunsCoverExactlyTheNonEmptyCells) {
   EXPECT_GT(parts_seen, 200);
 }
 
+// run() as the marches call it, from where the last run ended: every point
+// of an empty run lies in an empty macro cell (the one the sampler reads
+// there), on a volume whose non-empty cells fill a box inside air, so that
+// most of each ray lies before or after that box, and on rays along faces
+// and grid lines.
+TEST(EmptySpace, EmptyRunsHoldOnlyEmptyCells) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  const std::array<int, 3> n = {49, 41, 33};
+  const GridVolume volume = test::volume_from(n, [&](double x, double y, double z) {
+    const bool inside = x > 17 && x < 31 && y > 9 && y < 23 && z > 8 && z < 21;
+    return inside && u(rng) < 2e-3 ? 15.0 : 0.0;
+  });
+  const MacroCells cells(volume);
+  const TransferFunction tf = hat();
+  const EmptySpace space(cells, ZeroOpacity(tf));
+  ASSERT_LT(space.empty_count(), cells.count());
+  const auto cell_empty = [&](Vec3 p) {
+    int m[3];
+    for (int a = 0; a < 3; ++a)
+      m[a] = std::min(static_cast<int>(std::clamp(p[a], 0.0, n[a] - 1.0)), n[a] - 2) / MacroCells::kCells;
+    return space.empty(cells.index(m[0], m[1], m[2]));
+  };
+  int nonempty_runs = 0, empty_points = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const Ray ray = trial % 2 ? test::ray_along_faces(rng, trial / 2)
+                              : Ray{{u(rng) * 48, u(rng) * 40, -5}, normalize(Vec3{u(rng) - 0.5, u(rng) - 0.5, 1})};
+    const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
+    if (!iv) continue;
+    double t = iv->t0;
+    for (int guard = 0; t < iv->t1 && guard < 1000; ++guard) {
+      const EmptySpace::Run run = space.run(ray, t, iv->t1);
+      ASSERT_LE(run.t_end, iv->t1);
+      if (run.empty) {
+        for (int k = 0; k <= 50; ++k) {
+          const double x = t + (run.t_end - t) * (k + 0.5) / 51;
+          if (x - t > 1e-6 && run.t_end - x > 1e-6) {
+            ASSERT_TRUE(cell_empty(ray.at(x))) << "trial " << trial << " t " << x;
+            ++empty_points;
+          }
+        }
+      } else {
+        ++nonempty_runs;
+      }
+      t = run.t_end > t ? run.t_end : t + 0.25;  // as a march steps on past a run of no length
+    }
+  }
+  EXPECT_GT(nonempty_runs, 50);
+  EXPECT_GT(empty_points, 10000);
+}
+
 // The ranges are computed once per volume and shared by its copies (a
 // transfer-function edit makes a new integrator, not new ranges); concurrent
 // first uses agree on one computation; another volume gets its own.

@@ -19,8 +19,12 @@
 //   run's ranges then lies far enough inside one run of zero table scalars
 //   that the parabola through any three of its scalars stays in that run.
 // Classifying is O(macro cells) and takes milliseconds (bench_macro_cells).
+// A walk covers only the box of the non-empty macro cells: everything a ray
+// meets before or after it is empty, however many macro cells that is (most
+// of a walk's steps in a volume whose data sits inside air or background).
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "vri/core/ray.hpp"
@@ -65,16 +69,31 @@ class EmptySpace {
     double exit(int a) const;  // where the ray leaves the current cell through its face on axis a
     const EmptySpace& space_;
     const Ray& ray_;
-    double t_max_;
-    std::array<int, 3> cell_;
+    double t_max_, limit_ = 0;  // the walk's end: t_max or, before it, where the ray leaves the box
+    double box_entry_ = -std::numeric_limits<double>::infinity();  // an empty run before the box, to here
+    std::array<int, 3> cell_{};
     int step_[3];
-    double leave_[3];
+    double leave_[3] = {};
+    bool tail_ = false;  // what is left is one empty run to t_max
     bool done_ = false;
   };
 
  private:
+  // Where the ray lies in the box of the non-empty macro cells: [b0, b1],
+  // with the faces' planes crossed at face(axis, plane) (the caller's own
+  // formula); false when it misses the box or there is none.
+  template <class Face>
+  bool occupied_span(const Ray& ray, Face&& face, double& b0, double& b1) const;
+
+  // run() over the whole grid: the macro-cell walk from t, until the kind of cell changes or t_max.
+  Run walk(const Ray& ray, double t, double t_max) const;
+
   const MacroCells& cells_;
   std::vector<std::uint8_t> empty_;
+  // The box of the non-empty macro cells: macro cells [lo, hi) on each axis
+  // (lo = dims, hi = 0 when there is none).
+  std::array<int, 3> box_lo_, box_hi_;
+  bool whole_ = false;  // the box is the whole grid: it bounds no walk
 };
 
 // Calls visit(Interval part) for each run of non-empty macro cells along
