@@ -36,3 +36,28 @@ for name in neghip engine bonsai neghip_opaque neghip_spike neghip_lit; do
     echo "| $name | $method | $pw / $pc | $sw / $sc | $(python3 -c "print('%.2f' % ($pc / $sc))") | $same | $tw / $tc | $(python3 -c "print('%.2f' % ($pc / $tc))") | $change |"
   done
 done
+
+# What a frame costs before any sample: each scene with a transfer function of
+# zero opacity everywhere (every macro cell empty), preint1 step 1, one
+# thread, fastest of REPEATS: camera rays, clipping, the macro-cell walk and
+# the packets' set-up, per pixel.
+echo
+echo "| scene, zero-opacity transfer function | preint1 step 1, one thread: wall ms | ns per pixel |"
+echo "|---|---|---|"
+for name in neghip engine bonsai; do
+  /usr/bin/python3 - "scenes/$name.json" "$tmp/$name.empty.json" <<'PY'
+import json, os, sys
+scene = json.load(open(sys.argv[1]))
+base = os.path.dirname(os.path.abspath(sys.argv[1]))
+scene["volume"]["file"] = os.path.join(base, scene["volume"]["file"])
+scene["transfer_function"] = {"points": [[0, 0, 0, 0, 0], [1, 0, 0, 0, 0]]}
+json.dump(scene, open(sys.argv[2], "w"))
+PY
+  best=
+  for _ in $(seq "$repeats"); do
+    wall=$("$build/vri" render "$tmp/$name.empty.json" -o "$tmp/empty.npy" --method preint1 --step 1 --threads 1 \
+      --width 512 --height 512 2>&1 | sed -n 's/.* in \([0-9.e-]*\) s.*/\1/p')
+    best=$(awk -v a="$wall" -v b="${best:-1e9}" 'BEGIN { print (a < b) ? a : b }')
+  done
+  awk -v n="$name" -v w="$best" 'BEGIN { printf "| %s | %.1f | %.0f |\n", n, w * 1000, w * 1e9 / (512 * 512) }'
+done
