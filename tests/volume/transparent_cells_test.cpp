@@ -7,6 +7,8 @@
 #include <random>
 
 #include "test_support.hpp"
+#include "vri/core/error.hpp"
+#include "vri/core/memory_limit.hpp"
 #include "vri/tables/zero_opacity.hpp"
 #include "vri/volume/empty_space.hpp"
 #include "vri/volume/macro_cells.hpp"
@@ -64,6 +66,27 @@ TEST(TransparentCells, MarksExactlyTheCellsWhoseRangeHasNoExtinction) {
     EXPECT_GT(marked, tested / 10);  // both kinds occur among the cells tested
     EXPECT_LT(marked, tested * 9 / 10);
   }
+}
+
+// The bits are checked against the memory budget (--max-memory) before they
+// are allocated, as every structure sized by the volume is.
+TEST(TransparentCells, RefusesToExceedTheMemoryBudget) {
+  const GridVolume volume = test::volume_from({64, 64, 64}, [](double x, double, double) { return x; });
+  const TransferFunction tf = hat();
+  const ZeroOpacity zero(tf);
+  const MacroCells cells(volume);
+  const EmptySpace space(cells, zero);
+  const ZeroOpacityBins bins(zero, volume.min_value(), volume.max_value());
+  set_memory_limit(16 * 1024);  // the bits take 32 KiB
+  try {
+    TransparentCells transparent(volume, space, bins, 0);
+    set_memory_limit(0);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    set_memory_limit(0);
+    EXPECT_NE(std::string(e.what()).find("transparent-cell bits"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(TransparentCells(volume, space, bins, 0));
 }
 
 }  // namespace
