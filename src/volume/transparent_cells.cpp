@@ -29,33 +29,35 @@ TransparentCells::TransparentCells(const GridVolume& volume, const EmptySpace& s
       // that of two neighbours (in T: min and max commute with the exact or
       // monotone conversion to float the cell test makes).
       std::vector<T> lo(n[0]), hi(n[0]);
-      std::vector<int> occupied;  // the non-empty macro cells of the row
-      for (int k = mk * K; k < std::min((mk + 1) * K, n[2] - 1); ++k)
-        for (int j = 0; j + 1 < n[1]; ++j) {
-          occupied.clear();
-          for (int mi = 0; mi < m[0]; ++mi)
-            if (!space.empty(macro.index(mi, j / K, mk))) occupied.push_back(mi);
-          if (occupied.empty()) continue;
-          const T* __restrict r0 = values.data() + volume.index(0, j, k);
-          const T* __restrict r1 = r0 + sy;
-          const T* __restrict r2 = r0 + sz;
-          const T* __restrict r3 = r2 + sy;
-          T* __restrict l = lo.data();
-          T* __restrict h = hi.data();
-          for (int i = 0; i < n[0]; ++i) {  // (restrict: vectorized)
-            const T a = r0[i], b = r1[i], c = r2[i], d = r3[i];
-            l[i] = std::min(std::min(a, b), std::min(c, d));
-            h[i] = std::max(std::max(a, b), std::max(c, d));
-          }
-          const std::size_t row = static_cast<std::size_t>(k) * plane_bits_ + static_cast<std::size_t>(j) * row_;
-          for (const int mi : occupied)
-            for (int i = mi * K; i < std::min((mi + 1) * K, n[0] - 1); ++i) {
-              const double a = static_cast<float>(std::min(lo[i], lo[i + 1]));
-              const double b = static_cast<float>(std::max(hi[i], hi[i + 1]));
-              // (Without a branch: in the cells at a surface it is a coin toss.)
-              bits_[(row + i) >> 6] |= std::uint64_t{zero.over(a - margin, b + margin)} << ((row + i) & 63);
+      std::vector<int> occupied;  // the non-empty macro cells of a row of them
+      for (int mj = 0; mj < m[1]; ++mj) {
+        occupied.clear();
+        for (int mi = 0; mi < m[0]; ++mi)
+          if (!space.empty(macro.index(mi, mj, mk))) occupied.push_back(mi);
+        if (occupied.empty()) continue;
+        for (int k = mk * K; k < std::min((mk + 1) * K, n[2] - 1); ++k)
+          for (int j = mj * K; j < std::min((mj + 1) * K, n[1] - 1); ++j) {
+            const T* __restrict r0 = values.data() + volume.index(0, j, k);
+            const T* __restrict r1 = r0 + sy;
+            const T* __restrict r2 = r0 + sz;
+            const T* __restrict r3 = r2 + sy;
+            T* __restrict l = lo.data();
+            T* __restrict h = hi.data();
+            for (int i = 0; i < n[0]; ++i) {  // (restrict: vectorized)
+              const T a = r0[i], b = r1[i], c = r2[i], d = r3[i];
+              l[i] = std::min(std::min(a, b), std::min(c, d));
+              h[i] = std::max(std::max(a, b), std::max(c, d));
             }
-        }
+            const std::size_t row = bit(0, j, k);
+            for (const int mi : occupied)
+              for (int i = mi * K; i < std::min((mi + 1) * K, n[0] - 1); ++i) {
+                const double a = static_cast<float>(std::min(lo[i], lo[i + 1]));
+                const double b = static_cast<float>(std::max(hi[i], hi[i + 1]));
+                // (Without a branch: in the cells at a surface it is a coin toss.)
+                bits_[(row + i) >> 6] |= std::uint64_t{zero.over(a - margin, b + margin)} << ((row + i) & 63);
+              }
+          }
+      }
     });
   });
 }

@@ -25,12 +25,15 @@ class TransparentCells {
   TransparentCells(const GridVolume& volume, const EmptySpace& space, const ZeroOpacityBins& zero, double margin);
 
   bool transparent(int i, int j, int k) const {
-    const std::size_t bit = static_cast<std::size_t>(k) * plane_bits_ + static_cast<std::size_t>(j) * row_ + i;
-    return (bits_[bit >> 6] >> (bit & 63)) & 1;
+    const std::size_t b = bit(i, j, k);
+    return (bits_[b >> 6] >> (b & 63)) & 1;
   }
   std::size_t count() const;  // cells marked transparent
 
  private:
+  std::size_t bit(int i, int j, int k) const {
+    return static_cast<std::size_t>(k) * plane_bits_ + static_cast<std::size_t>(j) * row_ + static_cast<std::size_t>(i);
+  }
   std::size_t row_, plane_bits_;  // bits a row of cells, a plane (a whole number of words)
   std::vector<std::uint64_t> bits_;
 };
