@@ -14,10 +14,14 @@
 #include <vector>
 
 #include "vri/core/ray.hpp"
+#include "vri/render/image.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri::test {
+
+// An image's floats as a vector, for EXPECT_EQ (which prints where they differ).
+inline std::vector<float> pixels(const Image& image) { return {image.data().begin(), image.data().end()}; }
 
 // A volume whose sample (i,j,k) is f(x,y,z) at its world position.
 template <class F>

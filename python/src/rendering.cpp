@@ -163,8 +163,8 @@ const char* kKeywords =
 
 py::array_t<float> to_numpy(Image image) {
   const auto h = static_cast<std::size_t>(image.height()), w = static_cast<std::size_t>(image.width());
-  auto* data = new std::vector<float>(std::move(image.data()));
-  const py::capsule owner(data, [](void* p) { delete static_cast<std::vector<float>*>(p); });
+  auto* data = new ZeroedFloats(std::move(image).release());
+  const py::capsule owner(data, [](void* p) { delete static_cast<ZeroedFloats*>(p); });
   return py::array_t<float>({h, w, std::size_t{4}}, data->data(), owner);
 }
 

@@ -28,9 +28,9 @@ std::size_t mapped_bytes(std::size_t count) { return (count * sizeof(float) + kP
 
 }  // namespace
 
-ZeroedFloats::ZeroedFloats(std::size_t count) : size_(count) {
+ZeroedFloats::ZeroedFloats(std::size_t count, std::string_view what) : size_(count) {
   if (count == 0) return;
-  check_allocation(count, sizeof(float), "a table of " + std::to_string(count) + " floats");
+  check_allocation(count, sizeof(float), std::string(what) + " of " + std::to_string(count) + " floats");
   if (!mapped(count)) {
     data_ = static_cast<float*>(std::calloc(count, sizeof(float)));
     if (!data_) throw Error("out of memory for " + std::to_string(count * sizeof(float)) + " bytes");

@@ -6,7 +6,7 @@
 
 namespace vri {
 
-std::vector<ChannelDifference> compare_images(const std::vector<float>& a, const std::vector<float>& b,
+std::vector<ChannelDifference> compare_images(std::span<const float> a, std::span<const float> b,
                                               int channels, double tolerance) {
   if (a.size() != b.size()) throw Error("images differ in size");
   if (channels <= 0 || a.size() % channels != 0) throw Error("bad channel count");

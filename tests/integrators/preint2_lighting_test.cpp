@@ -100,7 +100,7 @@ TEST(Preint2Lighting, SameBytesWithAnyThreadCount) {
                           kField, kTf, lit(mode));
       const Image one = render(kCamera, *integrator, {.threads = 1});
       const Image two = render(kCamera, *integrator, {.threads = 2, .tile_size = 5});
-      EXPECT_EQ(one.data(), two.data()) << name << " " << mode;
+      EXPECT_EQ(test::pixels(one), test::pixels(two)) << name << " " << mode;
     }
 }
 

@@ -157,7 +157,7 @@ TEST(Preint2, SameBytesForAnyThreadCount) {
                                             scene.grid(), scene.transfer_function);
     const Image one = render(Camera(scene.camera), *integrator, {.threads = 1});
     const Image two = render(Camera(scene.camera), *integrator, {.threads = 2, .tile_size = 5});
-    EXPECT_EQ(one.data(), two.data()) << name;
+    EXPECT_EQ(test::pixels(one), test::pixels(two)) << name;
   }
 }
 

@@ -1,6 +1,7 @@
 // MetaImage (.mha, .mhd) against fixtures VTK's vtkMetaImageWriter and hand
 // formatted headers wrote (tools/make_mhd_npy_fixtures.py), and against broken
 // and hostile headers: one line of vri::Error each, nothing allocated first.
+#include "test_support.hpp"
 #include "vri/io/metaimage.hpp"
 
 #include <gtest/gtest.h>
@@ -179,7 +180,7 @@ TEST(MetaImage, RendersAsTheRawFile) {
     "method": {"name": "riemann", "step": 0.5}})";
   const auto render = [&](const GridVolume& v) {
     const Scene scene = parse_scene(json, v, test::volume_fixture(""));
-    return SceneRenderer(scene).render().data();
+    return test::pixels(SceneRenderer(scene).render());
   };
   const auto want = render(raw);
   double alpha = 0;

@@ -22,7 +22,7 @@ TEST(Npy, WritesAnAlignedVersion1HeaderAndReadsItBack) {
   EXPECT_EQ(text.back(), '\n');
   const auto arr = read_npy(dir / "i.npy");
   EXPECT_EQ(arr.shape, (std::vector<std::size_t>{2, 3, 4}));
-  EXPECT_EQ(arr.data, img.data());
+  EXPECT_EQ(arr.data, test::pixels(img));
   EXPECT_FLOAT_EQ(arr.data[(1 * 3 + 2) * 4 + 1], 0.5f);
 }
 

@@ -99,7 +99,7 @@ TEST(TiffVolume, RendersAsItsNpyTwin) {
     auto render = [&](const std::string& file) {
       const std::string scene = "{\"volume\": {\"file\": \"" + file + "\"}, \"transfer_function\": " + tf +
                                 R"(, "camera": {"width": 24, "height": 16}, "method": {"name": "preint1"}})";
-      return SceneRenderer(parse_scene(scene, volume_fixture(""), "scene")).render().data();
+      return test::pixels(SceneRenderer(parse_scene(scene, volume_fixture(""), "scene")).render());
     };
     const auto image = render(f.name);
     EXPECT_EQ(image, render(twin(f.name)));

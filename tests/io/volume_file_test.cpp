@@ -49,7 +49,7 @@ TEST(VolumeFile, ScenesOverEveryFormatRenderAsRaw) {
     "camera": {"width": 24, "height": 16}, "method": {"name": "preint1"})";
   auto render = [&](const std::string& volume) {
     const Scene s = parse_scene("{\"volume\": " + volume + ", " + rest + "}", fixture(""), "scene");
-    return SceneRenderer(s).render().data();
+    return test::pixels(SceneRenderer(s).render());
   };
   // The VTK fixtures hold vtk_scalars_uint8.raw with its spacing and origin.
   const auto raw = render(R"({"file": "vtk_scalars_uint8.raw", "dims": [11, 7, 5], "type": "uint8",

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "test_support.hpp"
 #include "vri/integrators/adaptive_guaranteed.hpp"
 #include "vri/integrators/adaptive_simpson.hpp"
 #include "vri/integrators/exact.hpp"
@@ -63,8 +64,8 @@ TEST(ErrorEstimate, GuaranteedModeBoundsTheActualError) {
 
 TEST(ErrorEstimate, SameBytesForAnyThreadCount) {
   const AdaptiveSimpsonIntegrator integ(volume(), tf(), {.tolerance = 1e-3, .strategy = AdaptiveStrategy::Decoupled});
-  EXPECT_EQ(render_error_estimate(camera(), integ, {.threads = 1}).data(),
-            render_error_estimate(camera(), integ, {.threads = 2, .tile_size = 3}).data());
+  EXPECT_EQ(test::pixels(render_error_estimate(camera(), integ, {.threads = 1})),
+            test::pixels(render_error_estimate(camera(), integ, {.threads = 2, .tile_size = 3})));
 }
 
 }  // namespace

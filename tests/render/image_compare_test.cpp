@@ -1,3 +1,4 @@
+#include "test_support.hpp"
 #include "vri/render/image_compare.hpp"
 
 #include <gtest/gtest.h>
@@ -22,9 +23,10 @@ TEST(CompareImages, SharesRmsAndMaxPerChannel) {
 }
 
 TEST(CompareImages, NanCountsAsOverAndSizesMustMatch) {
-  const auto d = compare_images({NAN, 0.f}, {0.f, 0.f}, 1, 0.1);
+  const std::vector<float> nan_zero{NAN, 0.f}, zeros{0.f, 0.f}, one_zero{0.f};
+  const auto d = compare_images(nan_zero, zeros, 1, 0.1);
   EXPECT_DOUBLE_EQ(d[0].share_over, 0.5);
-  EXPECT_THROW(compare_images({0.f}, {0.f, 0.f}, 1, 0.1), Error);
+  EXPECT_THROW(compare_images(one_zero, zeros, 1, 0.1), Error);
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ template <class RenderWith>
 void expect_same_with_any_thread_count(RenderWith render_with, const std::string& what) {
   const Image one = render_with(RenderOptions{.threads = 1});
   for (int threads : {2, 64})
-    EXPECT_EQ(render_with(RenderOptions{.threads = threads}).data(), one.data()) << what << " threads " << threads;
+    EXPECT_EQ(test::pixels(render_with(RenderOptions{.threads = threads})), test::pixels(one)) << what << " threads " << threads;
 }
 
 TEST(BundledDeterminism, EveryBundledSceneEveryMethodFamily) {

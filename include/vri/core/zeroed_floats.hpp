@@ -7,15 +7,19 @@
 // parallel. From 1 MiB up the mapping is whole, aligned 2 MiB pages (a
 // first-order table of N = 256 is 1 MiB); below, calloc (a fresh mapping's
 // 4 KiB page faults cost more than clearing reused heap memory). Copies copy
-// the contents.
+// the contents. Images are held the same way (render/image.hpp): a 512 x 512
+// RGBA image (4 MiB) took 11.8 ms to zero on 4 KiB pages on the project VM,
+// a quarter of a preint1 frame, and 0.3-0.8 ms on 2 MiB pages.
 #include <cstddef>
+#include <string_view>
 
 namespace vri {
 
 class ZeroedFloats {
  public:
   ZeroedFloats() = default;
-  explicit ZeroedFloats(std::size_t count);  // throws vri::Error when out of memory
+  // Throws vri::Error when over the memory budget (naming `what`) or out of memory.
+  explicit ZeroedFloats(std::size_t count, std::string_view what = "a table");
   ZeroedFloats(const ZeroedFloats& other);
   ZeroedFloats(ZeroedFloats&& other) noexcept;
   ZeroedFloats& operator=(ZeroedFloats other) noexcept;

@@ -1,6 +1,7 @@
 #pragma once
 // Per-channel differences between two images (SPEC §10 `vri compare`).
 #include <array>
+#include <span>
 #include <vector>
 
 namespace vri {
@@ -12,7 +13,7 @@ struct ChannelDifference {
 };
 
 // a and b hold `channels` interleaved values per pixel; sizes must match.
-std::vector<ChannelDifference> compare_images(const std::vector<float>& a, const std::vector<float>& b,
+std::vector<ChannelDifference> compare_images(std::span<const float> a, std::span<const float> b,
                                               int channels, double tolerance);
 
 }  // namespace vri
