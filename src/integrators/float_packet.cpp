@@ -77,6 +77,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
   // full slabs uses only its front sample, for its partial slab).
   for (unsigned m = active; m; m &= m - 1)
     if (const int l = __builtin_ctz(m); L.k[l] < L.full[l]) head(l);
+  if (!active) return;  // every ray missed the volume or leapt through empty space to its exit
   start_slab(sampler, values, lighting, axis, n, L, active);
   for (unsigned m = active; m; m &= m - 1)
     if (const int l = __builtin_ctz(m); L.k[l] >= L.full[l]) finish(l);
