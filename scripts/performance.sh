@@ -59,6 +59,8 @@ if want vtk_grid; then
     { stamp; DISPLAY=$display LP_NUM_THREADS=2 /usr/bin/python3 scripts/vtk_grid_side_by_side.py \
         "scenes/$s.json" 512 "$out/side" --repeat 5 $motions; } >"$out/vtk_grid_$s${motions:+_turned}.txt" 2>&1
   done
+  # The table of docs/PERFORMANCE.md from the eight files.
+  /usr/bin/python3 scripts/vtk_grid_summary.py "$out" >"$out/vtk_grid_summary.md"
 fi
 if want float_paths; then { stamp; bash scripts/float_paths_ab.sh "$build" 5; } >"$out/float_paths.txt" 2>&1; fi
 if want skipping; then { stamp; bash scripts/skipping_study.sh "$build" 3; } >"$out/skipping.txt" 2>&1; fi
