@@ -52,9 +52,13 @@ void read_stream_range(std::istream& in, const fs::path& path, std::uint64_t off
 }
 
 void write_file_atomically(const fs::path& path, std::span<const std::byte> bytes) {
-  if (OutputTransaction* active = OutputTransaction::active()) return active->stage(path, bytes);
+  write_file_atomically(path, std::span(&bytes, 1));
+}
+
+void write_file_atomically(const fs::path& path, std::span<const std::span<const std::byte>> parts) {
+  if (OutputTransaction* active = OutputTransaction::active()) return active->stage(path, parts);
   OutputTransaction own;
-  own.stage(path, bytes);
+  own.stage(path, parts);
   own.commit();
 }
 

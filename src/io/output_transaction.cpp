@@ -87,6 +87,10 @@ OutputTransaction::~OutputTransaction() {
 OutputTransaction* OutputTransaction::active() { return g_active.load(); }
 
 void OutputTransaction::stage(const fs::path& target, std::span<const std::byte> bytes) {
+  stage(target, std::span(&bytes, 1));
+}
+
+void OutputTransaction::stage(const fs::path& target, std::span<const std::span<const std::byte>> parts) {
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) fail(target, "directory '" + dir.string() + "' does not exist");
@@ -113,18 +117,20 @@ void OutputTransaction::stage(const fs::path& target, std::span<const std::byte>
     if (fd < 0) fail(target, "no free temporary name beside it");
     staged_.push_back({temp, target});
   }
-  const char* p = reinterpret_cast<const char*>(bytes.data());
-  std::size_t left = bytes.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd, p, left);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const std::string why = n < 0 ? std::strerror(errno) : "write failed";
-      ::close(fd);
-      fail(target, why);  // the destructor removes the temporary
+  for (const auto bytes : parts) {
+    const char* p = reinterpret_cast<const char*>(bytes.data());
+    std::size_t left = bytes.size();
+    while (left > 0) {
+      const ssize_t n = ::write(fd, p, left);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        const std::string why = n < 0 ? std::strerror(errno) : "write failed";
+        ::close(fd);
+        fail(target, why);  // the destructor removes the temporary
+      }
+      p += n;
+      left -= std::size_t(n);
     }
-    p += n;
-    left -= std::size_t(n);
   }
   if (::close(fd) != 0) fail(target, std::strerror(errno));
 }

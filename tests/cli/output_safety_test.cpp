@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "vri/io/file_io.hpp"
 #include "vri/io/output_transaction.hpp"
 
 extern char** environ;
@@ -84,6 +85,21 @@ TEST(OutputSafety, AnUncommittedTransactionLeavesNothing) {
     outputs.stage(dir / "b.bin", std::as_bytes(std::span(bytes)));
   }
   EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+// A file staged in parts (a header, then pixels in place) holds the parts in
+// order, empty ones included, and nothing else.
+TEST(OutputSafety, PartsAreWrittenInOrder) {
+  test::TempDir dir;
+  const std::string header = "head", empty, body(100000, 'b');
+  const std::span<const std::byte> parts[] = {std::as_bytes(std::span(header)), std::as_bytes(std::span(empty)),
+                                              std::as_bytes(std::span(body))};
+  write_file_atomically(dir / "parts.bin", parts);
+  const std::vector<std::byte> got = read_file(dir / "parts.bin");
+  const std::string all = header + body;
+  ASSERT_EQ(got.size(), all.size());
+  EXPECT_TRUE(std::equal(got.begin(), got.end(), std::as_bytes(std::span(all)).begin()));
+  EXPECT_EQ(listing(dir.path), std::vector<std::string>{"parts.bin"});  // no temporary left
 }
 
 // Waits (without a time limit of its own) until `dir` holds a temporary.

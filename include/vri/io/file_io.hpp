@@ -27,5 +27,7 @@ void read_stream_range(std::istream& in, const std::filesystem::path& path, std:
 // it into place, so a failure never leaves a truncated output. Inside an
 // OutputTransaction the rename waits for its commit(). Throws vri::Error.
 void write_file_atomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
+// The same for a file made of `parts`, one after another.
+void write_file_atomically(const std::filesystem::path& path, std::span<const std::span<const std::byte>> parts);
 
 }  // namespace vri

@@ -22,6 +22,9 @@ class OutputTransaction {
 
   // Writes `bytes` to a fresh temporary beside `target`; throws vri::Error.
   void stage(const std::filesystem::path& target, std::span<const std::byte> bytes);
+  // The same for a file made of `parts`, one after another (a header and an
+  // image's pixels, without a copy of them side by side).
+  void stage(const std::filesystem::path& target, std::span<const std::span<const std::byte>> parts);
   // Renames every staged temporary onto its target; throws vri::Error (and
   // removes the temporaries not yet renamed) if one cannot be.
   void commit();
