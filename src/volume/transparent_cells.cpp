@@ -14,8 +14,9 @@ TransparentCells::TransparentCells(const GridVolume& volume, const EmptySpace& s
   const auto& n = volume.dims();
   row_ = static_cast<std::size_t>(n[0]);
   plane_bits_ = (row_ * n[1] + 63) / 64 * 64;
-  check_allocation(plane_bits_ / 64 * n[2], sizeof(std::uint64_t), "the transparent-cell bits");
-  bits_.assign(plane_bits_ / 64 * n[2], 0);
+  const std::size_t words = plane_bits_ / 64 * n[2];
+  check_allocation(words, sizeof(std::uint64_t), "the transparent-cell bits");
+  bits_.assign(words, 0);
   const MacroCells& macro = space.cells();
   const auto& m = macro.dims();
   constexpr int K = MacroCells::kCells;
