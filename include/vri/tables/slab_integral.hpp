@@ -73,16 +73,14 @@ SlabRgba integrate_sub_pieces(std::span<const SubPiece> subs, double lo, double 
   return acc;
 }
 
-// The slab from continuous index u_f to u_b (DiscreteTf::at_index) of length
-// l, composited piece by piece with `piece(front, back, d)` -> SlabRgba: one
-// piece per plain bin (or part of one), one per sub-piece of a split bin.
-// u_f == u_b is the homogeneous slab. O(|u_b - u_f| + 1 + sub-pieces crossed).
-template <class PieceFn>
-SlabRgba integrate_slab(const DiscreteTf& tf, double u_f, double u_b, double length, PieceFn piece) {
-  if (u_f == u_b) return homogeneous_slab(tf.at_index(u_f), length);
+// The pieces of the slab from continuous index u_f != u_b to u_b
+// (DiscreteTf::at_index) of length l, front to back: plain(front, back, d)
+// for each plain bin (or part of one), d its length, and split(subs, lo, hi,
+// dir, per_index) for the part [lo, hi] of a split bin (integrate_sub_pieces).
+template <class Plain, class Split>
+void for_each_slab_bin(const DiscreteTf& tf, double u_f, double u_b, double length, Plain&& plain, Split&& split) {
   const double dir = u_b > u_f ? 1 : -1;
   const double per_index = length / std::abs(u_b - u_f);
-  SlabRgba acc;
   double u = u_f;
   TfSample front = tf.at_index(u);
   while (u != u_b) {
@@ -93,19 +91,39 @@ SlabRgba integrate_slab(const DiscreteTf& tf, double u_f, double u_b, double len
     const auto subs = tf.sub_pieces(bin);
     if (subs.empty()) {
       const TfSample back = tf.at_index(next);
-      acc = over(acc, piece(front, back, std::abs(next - u) * per_index));
+      plain(front, back, std::abs(next - u) * per_index);
       front = back;
     } else {
-      acc = over(acc, integrate_sub_pieces(subs, std::min(u, next), std::max(u, next), dir, per_index, piece));
+      split(subs, std::min(u, next), std::max(u, next), dir, per_index);
       front = tf.at_index(next);
     }
     u = next;
   }
+}
+
+// The slab from continuous index u_f to u_b (DiscreteTf::at_index) of length
+// l, composited piece by piece with `piece(front, back, d)` -> SlabRgba: one
+// piece per plain bin (or part of one), one per sub-piece of a split bin.
+// u_f == u_b is the homogeneous slab. O(|u_b - u_f| + 1 + sub-pieces crossed).
+template <class PieceFn>
+SlabRgba integrate_slab(const DiscreteTf& tf, double u_f, double u_b, double length, PieceFn piece) {
+  if (u_f == u_b) return homogeneous_slab(tf.at_index(u_f), length);
+  SlabRgba acc;
+  for_each_slab_bin(
+      tf, u_f, u_b, length,
+      [&](const TfSample& front, const TfSample& back, double d) { acc = over(acc, piece(front, back, d)); },
+      [&](std::span<const SubPiece> subs, double lo, double hi, double dir, double per_index) {
+        acc = over(acc, integrate_sub_pieces(subs, lo, hi, dir, per_index, piece));
+      });
   return acc;
 }
 
 // integrate_slab with linear_piece: the exact slab integral at any scalars,
-// and the same at continuous indices u_f, u_b (DiscreteTf::at_index).
+// and the same at continuous indices u_f, u_b (DiscreteTf::at_index). The
+// plain bins' weights are found four at a time (the series of
+// piece_weights.hpp on GCC vectors: the same operations lane by lane, so the
+// same bits as linear_piece): the partial last slab of a ray that leaves the
+// volume through its data crosses a dozen bins or more.
 SlabRgba exact_slab(const DiscreteTf& tf, double s_f, double s_b, double length);
 SlabRgba exact_index_slab(const DiscreteTf& tf, double u_f, double u_b, double length);
 
