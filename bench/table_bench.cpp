@@ -3,10 +3,16 @@
 // one voxel; tables with lengths span 0 .. 2 voxels.
 //   BM_Table/<builder>/N/threads         N x N table
 //   BM_LengthTable/<builder>/N/M/threads M x N x N table
+//   BM_ExactSlab/<way>/bins      one exact slab across `bins` table bins
+//                                (presets/engine.json, 256 bins, half a voxel):
+//                                exact_index_slab ("batched", four weights at
+//                                a time) against the same pieces one by one
+//                                with linear_piece ("one_by_one")
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
 #include "vri/scene/scene.hpp"
+#include "vri/tables/slab_integral.hpp"
 #include "vri/tables/table_builder.hpp"
 
 namespace {
@@ -31,6 +37,24 @@ void BM_LengthTable(benchmark::State& state, const char* builder_name) {
     benchmark::DoNotOptimize(vri::build_length_table(*builder, tf, static_cast<int>(state.range(1)), 2.0));
 }
 
+// The partial last slab of a ray that leaves the engine through its data
+// (float_march.hpp, last_slabs): scalars 14 bins apart on average there.
+void BM_ExactSlab(benchmark::State& state, bool batched) {
+  static const vri::DiscreteTf tf(vri::load_transfer_function(VRI_SOURCE_DIR "/presets/engine.json"), 256);
+  const double bins = static_cast<double>(state.range(0));
+  const auto piece = [](const vri::TfSample& p, const vri::TfSample& q, double d) {
+    return vri::linear_piece(p, q, d).forward;
+  };
+  double u = 0;
+  for (auto _ : state) {
+    // Backs in 120 .. 180 (where the engine is opaque), fronts `bins` higher.
+    u = u < 60 ? u + 0.37 : 0;
+    const double u_f = 120 + u + bins, u_b = 120 + u;
+    benchmark::DoNotOptimize(batched ? vri::exact_index_slab(tf, u_f, u_b, 0.5)
+                                     : vri::integrate_slab(tf, u_f, u_b, 0.5, piece));
+  }
+}
+
 // Lum et al. 2004, Table 1 sizes; brute stops at 256 (512 would take ~15 s a run).
 BENCHMARK_CAPTURE(BM_Table, brute, "brute")
     ->ArgsProduct({{32, 64, 128, 256}, {1}})
@@ -52,6 +76,9 @@ BENCHMARK_CAPTURE(BM_LengthTable, incremental, "incremental")
     ->Args({256, 128, 2})
     ->Args({256, 128, 1})
     ->Unit(benchmark::kMillisecond);
+
+BENCHMARK_CAPTURE(BM_ExactSlab, batched, true)->Arg(1)->Arg(4)->Arg(14)->Arg(64);
+BENCHMARK_CAPTURE(BM_ExactSlab, one_by_one, false)->Arg(1)->Arg(4)->Arg(14)->Arg(64);
 
 }  // namespace
 
