@@ -36,12 +36,11 @@ class PieceBatch {
     if (++n_ == 4) flush();
   }
   void flush() {
-    using V4 = double __attribute__((vector_size(32)));
-    const V4 a = {a_[0], a_[1], a_[2], a_[3]}, b = {b_[0], b_[1], b_[2], b_[3]};
     bool thin = n_ == 4;
     for (int k = 0; k < n_; ++k) thin = thin && std::max(a_[k], b_[k]) <= piece_series::kThin;
     if (thin) {
-      const auto w = thin_piece_weights(a, b);
+      using V4 = double __attribute__((vector_size(32)));
+      const auto w = thin_piece_weights(V4{a_[0], a_[1], a_[2], a_[3]}, V4{b_[0], b_[1], b_[2], b_[3]});
       for (int k = 0; k < 4; ++k) acc_ = over(acc_, weighted(p_[k], q_[k], w.fp[k], w.fq[k], w.alpha[k]));
     } else {
       for (int k = 0; k < n_; ++k) {
