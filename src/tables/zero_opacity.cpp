@@ -13,6 +13,21 @@ ZeroOpacity::ZeroOpacity(const TransferFunction& tf) : tf_(&tf) {
 }
 
 ZeroOpacity::ZeroOpacity(const DiscreteTf& tf, TableOrder order) : axis_(tf.axis()), order_(order) {
+  if (order == TableOrder::Second) {
+    // Table scalar i at position 2i, bin i (x_i .. x_i+1) at 2i + 1: a bin
+    // with extinction inside counts, its table scalars only if they have it.
+    const int n = tf.size();
+    std::vector<char> opaque(2 * n - 1);
+    for (int i = 0; i < n; ++i) opaque[2 * i] = tf[i].tau != 0;
+    for (int k = 0; k + 1 < n; ++k) opaque[2 * k + 1] = tf[k].tau != 0 || tf[k + 1].tau != 0;
+    for (int k : tf.split_bins()) {
+      opaque[2 * k + 1] = 0;
+      for (const SubPiece& s : tf.sub_pieces(k)) opaque[2 * k + 1] |= s.p.tau != 0 || s.q.tau != 0;
+    }
+    opaque_before_.assign(opaque.size() + 1, 0);
+    for (std::size_t i = 0; i < opaque.size(); ++i) opaque_before_[i + 1] = opaque_before_[i] + opaque[i];
+    return;
+  }
   // A split bin with extinction inside (a spike between two table scalars)
   // marks both its table scalars opaque: every entry that covers it then counts.
   std::vector<char> opaque(tf.size());
@@ -35,14 +50,17 @@ bool ZeroOpacity::over(double lo, double hi) const {
     first = static_cast<int>(axis_.index(lo));
     last = static_cast<int>(std::ceil(axis_.index(hi)));
   }
-  const int opaque = opaque_before_[first];
-  if (opaque_before_[last + 1] != opaque) return false;
-  if (order_ == TableOrder::First) return true;
-  // The run a..b of zero-tau scalars that holds first..last, and the parabola's
-  // reach beyond the range of its three scalars (header; El Hajjar et al. 2008, Eq. 2).
+  if (order_ == TableOrder::First) return opaque_before_[last + 1] == opaque_before_[first];
+  // Positions 2 first .. 2 last (table scalars and the bins between them) have
+  // no extinction; the run of such positions that holds them spans the table
+  // scalars a..b; and the parabola's reach beyond the range of its three
+  // scalars (header; El Hajjar et al. 2008, Eq. 2).
+  const int opaque = opaque_before_[2 * first];
+  if (opaque_before_[2 * last + 1] != opaque) return false;
   const auto begin = opaque_before_.begin();
-  const int a = static_cast<int>(std::lower_bound(begin, begin + first + 1, opaque) - begin);
-  const int b = static_cast<int>(std::upper_bound(begin + last + 1, opaque_before_.end(), opaque) - begin) - 2;
+  const int p = static_cast<int>(std::lower_bound(begin, begin + 2 * first + 1, opaque) - begin);
+  const int q = static_cast<int>(std::upper_bound(begin + 2 * last + 1, opaque_before_.end(), opaque) - begin) - 2;
+  const int a = (p + 1) / 2, b = q / 2;
   const double reach = (b - a) / 8.0 + 1e-3;
   return (a == 0 || first >= a + reach) && (b == axis_.n - 1 || last <= b - reach);
 }

@@ -21,7 +21,10 @@
 #include "vri/integrators/make_integrator.hpp"
 #include "vri/render/renderer.hpp"
 #include "vri/scene/scene.hpp"
+#include "vri/tables/zero_opacity.hpp"
 #include "vri/volume/builtin_volumes.hpp"
+#include "vri/volume/empty_space.hpp"
+#include "vri/volume/macro_cells.hpp"
 
 namespace vri {
 namespace {
@@ -105,6 +108,21 @@ TEST(FastPath, Preint2DualSkippingChangesNoBit) {
     expect_same_bytes(render_with(scene, spec, kPlain, lighting), render_with(scene, spec, kSkip, lighting),
                       std::string("preint2-dual ") + mode);
   }
+}
+
+// fuel at preint2-dual's 64-entry table: its background of zeros (and of
+// values up to 8, table scalar 2) lies in the transfer function's zero run,
+// which ends at 10, inside the bin 8.1..12.1 (ZeroOpacity's runs of the
+// discrete transfer function); most macro cells are empty and skipped, and
+// the image keeps its bytes.
+TEST(FastPath, Preint2DualSkipsFuelsBackgroundAtItsDefaultTable) {
+  const Scene scene = small("scenes/fuel.json", 48);
+  const MacroCells cells(scene.grid());
+  const EmptySpace space(cells, ZeroOpacity(DiscreteTf(scene.transfer_function, 64), TableOrder::Second));
+  EXPECT_GT(space.empty_count(), cells.count() * 8 / 10);
+  const MethodSpec spec{.name = "preint2-dual", .iterations = 8};
+  expect_same_bytes(render_with(scene, spec, kPlain), render_with(scene, spec, kSkip), "fuel");
+  expect_same_bytes(render_with(scene, spec, kPlainDouble), render_with(scene, spec, kSkipDouble), "fuel double");
 }
 
 TEST(FastPath, SkippingChangesNoBitWithLighting) {

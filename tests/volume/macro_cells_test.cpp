@@ -163,6 +163,46 @@ TEST(ZeroOpacity, SecondOrderNeedsNoMarginAtTheEndsOfTheAxis) {
     for (int b = 0; b <= 43; ++b) EXPECT_EQ(second_order_entry(tf, f, 0, b, 1.0, 32).a, 0) << f << " " << b;
 }
 
+// A bin with extinction inside (a split bin) ends a run of zero tau, but its
+// table scalars stay in the runs on either side when their own tau is 0: here
+// tau = 0 on [0, 50.5] and on [10.5, 89.5] of table scalars 0..100, so the
+// runs are the table scalars 0..50 and 11..89, (b - a)/8 of which leaves
+// 0..43 and 21..79, and every entry over them is 0 with every builder (the
+// fast one reads first-order entries at the table scalars around each chord
+// end, so a run cannot end inside a bin). Counting a split bin's table
+// scalars as opaque gave 0..42 and 22..78; on fuel's 64-entry table, whose
+// zero run ends at 10 in the bin 8.1..12.1, not one macro cell (issue 21).
+TEST(ZeroOpacity, SecondOrderRunsKeepTheZeroTableScalarsOfASplitBin) {
+  const DiscreteTf end(
+      TransferFunction({{0, 1, 1, 1, 0}, {50.5, 1, 1, 1, 0}, {51.5, 1, 1, 1, 1}, {100, 1, 1, 1, 1}}), 101);
+  const DiscreteTf inner(TransferFunction({{0, 1, 1, 1, 1}, {9.5, 1, 1, 1, 1}, {10.5, 1, 1, 1, 0}, {89.5, 1, 1, 1, 0},
+                                          {90.5, 1, 1, 1, 1}, {100, 1, 1, 1, 1}}),
+                         101);
+  const ZeroOpacity zero_end(end, TableOrder::Second), zero_inner(inner, TableOrder::Second);
+  EXPECT_TRUE(zero_end.over(-5, 43));
+  EXPECT_FALSE(zero_end.over(-5, 43.01));
+  EXPECT_TRUE(zero_inner.over(21, 79));
+  EXPECT_FALSE(zero_inner.over(20.99, 79));
+  EXPECT_FALSE(zero_inner.over(21, 79.01));
+  // Scalars near a run's end are not enough: 0, 45, 45 peaks at 45 + 45/8 = 50.6.
+  EXPECT_GT(second_order_entry(end, 0, 45, 45, 1.0, 64).a, 0);
+  for (const auto& builder : {"plain", "fast"}) {
+    const SecondOrderTable te = make_second_order_builder(builder)->build(end, 1.0, 16);
+    const SecondOrderTable ti = make_second_order_builder(builder)->build(inner, 1.0, 16);
+    for (int f = 0; f <= 79; ++f)
+      for (int m = 0; m <= 79; ++m)
+        for (int b = 0; b <= 79; ++b)
+          for (int c = 0; c < 4; ++c) {
+            if (f <= 43 && m <= 43 && b <= 43) {
+              ASSERT_EQ(te.entry(f, m, b)[c], 0.0f) << builder << f << " " << m << " " << b;
+            }
+            if (f >= 21 && m >= 21 && b >= 21) {
+              ASSERT_EQ(ti.entry(f, m, b)[c], 0.0f) << builder << f << " " << m << " " << b;
+            }
+          }
+  }
+}
+
 // One non-zero sample at (20, 20, 20), in macro cell (2, 2, 2) only: a ray
 // along x at y = z = 20 leaps to x = 16, then stays in that cell until x = 24.
 // Another non-zero sample at (28, 20, 20) makes (3, 2, 2) non-empty too: the

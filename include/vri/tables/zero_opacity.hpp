@@ -17,7 +17,10 @@
 //   by up to 1/8 of its width (the Lagrange basis on [0, 1] dips to -1/8 at
 //   t = 1/4 and 3/4) before it is clamped to the axis. So the entries
 //   i = floor(index(lo)) .. ceil(index(hi)) must lie in a run a..b of
-//   zero-tau table scalars at least (b - a)/8 (+ 1e-3 for rounding) away from
+//   zero-tau table scalars with zero-tau bins between them (a bin split by a
+//   control point ends a run, but its table scalars stay in the runs on either
+//   side when their own tau is 0: fuel's 64-entry table then skips its
+//   background), at least (b - a)/8 (+ 1e-3 for rounding) away from
 //   each end of the run that is not an end of the axis: then any three of
 //   them span at most b - a, their parabola stays inside a..b, and every
 //   sub-step of the entry reads tau = 0 and colour times alpha = 0. The
