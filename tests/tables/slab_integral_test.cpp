@@ -120,5 +120,27 @@ TEST(ExactSlab, BatchedWeightsAreBitForBitThePieceByPieceComposite) {
   EXPECT_GT(compared, 3000);  // most slabs are not transparent
 }
 
+// for_each_slab_bin reads a table scalar short of the slab's end as its
+// sample, tf[i], where it used to ask at_index(i): the two must be the same
+// bits at every table scalar but the last (plain and split bins, steps on a
+// table scalar, spikes inside a bin), or the slabs would change.
+TEST(ExactSlab, TableScalarsAreTheirSamplesBitForBit) {
+  for (unsigned seed = 0; seed < 8; ++seed)
+    for (int n : {7, 64, 256}) {
+      const DiscreteTf tf(test::random_spiky_tf(seed, 50.0), n);
+      int split = 0;
+      for (int i = 0; i + 1 < n; ++i) {
+        const TfSample a = tf.at_index(i), b = tf[i];
+        ASSERT_TRUE(a.r == b.r && a.g == b.g && a.b == b.b && a.tau == b.tau) << seed << " " << n << " " << i;
+        split += !tf.sub_pieces(i).empty();
+      }
+      EXPECT_GT(split, 0) << seed << " " << n;  // split bins were among them
+    }
+  // A step exactly on a table scalar: the scalar holds the value after it.
+  const DiscreteTf step(TransferFunction({{0, 0, 0, 0, 0}, {2, 0, 0, 0, 0}, {2, 1, 1, 1, 5}, {4, 1, 1, 1, 5}}), 5);
+  EXPECT_EQ(step[2].tau, 5);
+  EXPECT_EQ(step.at_index(2).tau, step[2].tau);
+}
+
 }  // namespace
 }  // namespace vri

@@ -83,6 +83,10 @@ void for_each_slab_bin(const DiscreteTf& tf, double u_f, double u_b, double leng
   const double per_index = length / std::abs(u_b - u_f);
   double u = u_f;
   TfSample front = tf.at_index(u);
+  // at_index at a table scalar short of u_b: that scalar's sample (a table
+  // scalar before the last one, where at_index reads it with weight 1 and
+  // its neighbour's with weight 0: the same bits), without its search.
+  const auto at = [&](double next) { return next == u_b ? tf.at_index(next) : tf[static_cast<int>(next)]; };
   while (u != u_b) {
     // The next table scalar in the direction of travel, or u_b.
     double next = dir > 0 ? std::floor(u) + 1 : std::ceil(u) - 1;
@@ -90,12 +94,12 @@ void for_each_slab_bin(const DiscreteTf& tf, double u_f, double u_b, double leng
     const int bin = static_cast<int>(std::min(u, next));
     const auto subs = tf.sub_pieces(bin);
     if (subs.empty()) {
-      const TfSample back = tf.at_index(next);
+      const TfSample back = at(next);
       plain(front, back, std::abs(next - u) * per_index);
       front = back;
     } else {
       split(subs, std::min(u, next), std::max(u, next), dir, per_index);
-      front = tf.at_index(next);
+      front = at(next);
     }
     u = next;
   }
