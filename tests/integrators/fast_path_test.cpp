@@ -110,11 +110,11 @@ TEST(FastPath, Preint2DualSkippingChangesNoBit) {
   }
 }
 
-// fuel at preint2-dual's 64-entry table: its background of zeros (and of
-// values up to 8, table scalar 2) lies in the transfer function's zero run,
-// which ends at 10, inside the bin 8.1..12.1 (ZeroOpacity's runs of the
-// discrete transfer function); most macro cells are empty and skipped, and
-// the image keeps its bytes.
+// fuel at preint2-dual's 64-entry table: its transfer function leaves zero
+// at 10, inside the bin 8.1..12.1, which ends the zero run at the table
+// scalar 8.1 (ZeroOpacity, TableOrder::Second); its background of zeros then
+// lies (b - a)/8 inside that run, so most macro cells are empty and skipped,
+// and the image keeps its bytes.
 TEST(FastPath, Preint2DualSkipsFuelsBackgroundAtItsDefaultTable) {
   const Scene scene = small("scenes/fuel.json", 48);
   const MacroCells cells(scene.grid());

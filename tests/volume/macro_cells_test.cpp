@@ -167,9 +167,9 @@ TEST(ZeroOpacity, SecondOrderNeedsNoMarginAtTheEndsOfTheAxis) {
 // table scalars stay in the runs on either side when their own tau is 0: here
 // tau = 0 on [0, 50.5] and on [10.5, 89.5] of table scalars 0..100, so the
 // runs are the table scalars 0..50 and 11..89, (b - a)/8 of which leaves
-// 0..43 and 21..79, and every entry over them is 0 with every builder (the
-// fast one reads first-order entries at the table scalars around each chord
-// end, so a run cannot end inside a bin). Counting a split bin's table
+// 0..43 and 21..79, and every entry over them is 0 with the plain and the
+// fast builder (the fast one reads first-order entries at the table scalars
+// around each chord end, so a run cannot end inside a bin). Counting a split bin's table
 // scalars as opaque gave 0..42 and 22..78; on fuel's 64-entry table, whose
 // zero run ends at 10 in the bin 8.1..12.1, not one macro cell (issue 21).
 TEST(ZeroOpacity, SecondOrderRunsKeepTheZeroTableScalarsOfASplitBin) {
