@@ -13,30 +13,31 @@ ZeroOpacity::ZeroOpacity(const TransferFunction& tf) : tf_(&tf) {
 }
 
 ZeroOpacity::ZeroOpacity(const DiscreteTf& tf, TableOrder order) : axis_(tf.axis()), order_(order) {
-  if (order == TableOrder::Second) {
+  const int n = tf.size();
+  // Whether split bin k has extinction inside (a spike between two table scalars).
+  const auto split_opaque = [&](int k) {
+    for (const SubPiece& s : tf.sub_pieces(k))
+      if (s.p.tau != 0 || s.q.tau != 0) return true;
+    return false;
+  };
+  std::vector<char> opaque;
+  if (order == TableOrder::First) {
+    // A split bin with extinction inside marks both its table scalars opaque:
+    // every entry that covers it then counts.
+    opaque.resize(n);
+    for (int i = 0; i < n; ++i) opaque[i] = tf[i].tau != 0;
+    for (int k : tf.split_bins())
+      if (split_opaque(k)) opaque[k] = opaque[k + 1] = 1;
+  } else {
     // Table scalar i at position 2i, bin i (x_i .. x_i+1) at 2i + 1: a bin
     // with extinction inside counts, its table scalars only if they have it.
-    const int n = tf.size();
-    std::vector<char> opaque(2 * n - 1);
+    opaque.resize(2 * n - 1);
     for (int i = 0; i < n; ++i) opaque[2 * i] = tf[i].tau != 0;
-    for (int k = 0; k + 1 < n; ++k) opaque[2 * k + 1] = tf[k].tau != 0 || tf[k + 1].tau != 0;
-    for (int k : tf.split_bins()) {
-      opaque[2 * k + 1] = 0;
-      for (const SubPiece& s : tf.sub_pieces(k)) opaque[2 * k + 1] |= s.p.tau != 0 || s.q.tau != 0;
-    }
-    opaque_before_.assign(opaque.size() + 1, 0);
-    for (std::size_t i = 0; i < opaque.size(); ++i) opaque_before_[i + 1] = opaque_before_[i] + opaque[i];
-    return;
+    for (int k = 0; k + 1 < n; ++k)
+      opaque[2 * k + 1] = tf.sub_pieces(k).empty() ? tf[k].tau != 0 || tf[k + 1].tau != 0 : split_opaque(k);
   }
-  // A split bin with extinction inside (a spike between two table scalars)
-  // marks both its table scalars opaque: every entry that covers it then counts.
-  std::vector<char> opaque(tf.size());
-  for (int i = 0; i < tf.size(); ++i) opaque[i] = tf[i].tau != 0;
-  for (int k : tf.split_bins())
-    for (const SubPiece& s : tf.sub_pieces(k))
-      if (s.p.tau != 0 || s.q.tau != 0) opaque[k] = opaque[k + 1] = 1;
-  opaque_before_.assign(tf.size() + 1, 0);
-  for (int i = 0; i < tf.size(); ++i) opaque_before_[i + 1] = opaque_before_[i] + opaque[i];
+  opaque_before_.assign(opaque.size() + 1, 0);
+  for (std::size_t i = 0; i < opaque.size(); ++i) opaque_before_[i + 1] = opaque_before_[i] + opaque[i];
 }
 
 bool ZeroOpacity::over(double lo, double hi) const {
