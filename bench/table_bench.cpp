@@ -5,9 +5,10 @@
 //   BM_LengthTable/<builder>/N/M/threads M x N x N table
 //   BM_ExactSlab/<way>/bins      one exact slab across `bins` table bins
 //                                (presets/engine.json, 256 bins, half a voxel):
-//                                exact_index_slab ("batched", four weights at
-//                                a time) against the same pieces one by one
-//                                with linear_piece ("one_by_one")
+//                                exact_index_slab ("runs": a straight run of
+//                                bins one piece, four weights at a time)
+//                                against every bin a piece, one by one, with
+//                                linear_piece ("bins_one_by_one")
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
@@ -39,7 +40,7 @@ void BM_LengthTable(benchmark::State& state, const char* builder_name) {
 
 // The partial last slab of a ray that leaves the engine through its data
 // (float_march.hpp, last_slabs): scalars 14 bins apart on average there.
-void BM_ExactSlab(benchmark::State& state, bool batched) {
+void BM_ExactSlab(benchmark::State& state, bool runs) {
   static const vri::DiscreteTf tf(vri::load_transfer_function(VRI_SOURCE_DIR "/presets/engine.json"), 256);
   const double bins = static_cast<double>(state.range(0));
   const auto piece = [](const vri::TfSample& p, const vri::TfSample& q, double d) {
@@ -50,8 +51,8 @@ void BM_ExactSlab(benchmark::State& state, bool batched) {
     // Backs in 120 .. 180 (where the engine is opaque), fronts `bins` higher.
     u = u < 60 ? u + 0.37 : 0;
     const double u_f = 120 + u + bins, u_b = 120 + u;
-    benchmark::DoNotOptimize(batched ? vri::exact_index_slab(tf, u_f, u_b, 0.5)
-                                     : vri::integrate_slab(tf, u_f, u_b, 0.5, piece));
+    benchmark::DoNotOptimize(runs ? vri::exact_index_slab(tf, u_f, u_b, 0.5)
+                                  : vri::integrate_slab(tf, u_f, u_b, 0.5, piece, vri::SlabPieces::Bins));
   }
 }
 
@@ -77,8 +78,8 @@ BENCHMARK_CAPTURE(BM_LengthTable, incremental, "incremental")
     ->Args({256, 128, 1})
     ->Unit(benchmark::kMillisecond);
 
-BENCHMARK_CAPTURE(BM_ExactSlab, batched, true)->Arg(1)->Arg(4)->Arg(14)->Arg(64);
-BENCHMARK_CAPTURE(BM_ExactSlab, one_by_one, false)->Arg(1)->Arg(4)->Arg(14)->Arg(64);
+BENCHMARK_CAPTURE(BM_ExactSlab, runs, true)->Arg(1)->Arg(4)->Arg(14)->Arg(64);
+BENCHMARK_CAPTURE(BM_ExactSlab, bins_one_by_one, false)->Arg(1)->Arg(4)->Arg(14)->Arg(64);
 
 }  // namespace
 

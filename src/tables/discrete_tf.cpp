@@ -32,6 +32,9 @@ DiscreteTf::DiscreteTf(const TransferFunction& tf, int n) {
   samples_.reserve(n);
   for (int i = 0; i < n; ++i) samples_.push_back(tf(axis_.scalar(i)));
   sub_begin_.assign(n + 1, 0);
+  linear_begin_.resize(n - 1);
+  linear_end_.resize(n - 1);
+  for (int k = 0; k + 1 < n; ++k) linear_begin_[k] = k, linear_end_[k] = k + 1;
   if (!(axis_.s_hi > axis_.s_lo)) return;  // one scalar: every bin is empty
   // Walk the transfer function's segments across each bin: a breakpoint inside
   // the bin ends a sub-piece (left value) and starts the next (right value);
@@ -39,6 +42,7 @@ DiscreteTf::DiscreteTf(const TransferFunction& tf, int n) {
   // the sample there only at a step exactly on x_{k+1}.
   const auto& segments = tf.segments();
   std::vector<SubPiece> bin;
+  std::vector<int> line(n - 1, -1);  // a plain bin's segment, -1 for a split one
   for (int k = 0; k + 1 < n; ++k) {
     sub_begin_[k] = static_cast<int>(subs_.size());
     const double x0 = axis_.scalar(k), x1 = axis_.scalar(k + 1);
@@ -55,11 +59,21 @@ DiscreteTf::DiscreteTf(const TransferFunction& tf, int n) {
       v = segments[seg].at(bp);
     }
     bin.push_back({u, double(k + 1), v, segments[seg].at(x1)});
-    if (bin.size() == 1 && same(bin[0].q, samples_[k + 1])) continue;  // plain: linear sample to sample
+    if (bin.size() == 1 && same(bin[0].q, samples_[k + 1])) {  // plain: linear sample to sample
+      line[k] = seg;
+      continue;
+    }
     split_.push_back(k);
     subs_.insert(subs_.end(), bin.begin(), bin.end());
   }
   sub_begin_[n - 1] = sub_begin_[n] = static_cast<int>(subs_.size());
+  // Neighbouring plain bins on one segment make one straight run. A control
+  // point exactly on the scalar between them starts the next segment there
+  // (segment_index: the later point holds), so it ends the run.
+  for (int k = 1; k + 1 < n; ++k)
+    if (line[k] >= 0 && line[k] == line[k - 1]) linear_begin_[k] = linear_begin_[k - 1];
+  for (int k = n - 3; k >= 0; --k)
+    if (line[k] >= 0 && line[k] == line[k + 1]) linear_end_[k] = linear_end_[k + 1];
 }
 
 TfSample DiscreteTf::at_index(double u) const {

@@ -79,7 +79,8 @@ SlabRgba exact_index_slab(const DiscreteTf& tf, double u_f, double u_b, double l
       [&](std::span<const SubPiece> subs, double lo, double hi, double dir, double per_index) {
         batch.flush();  // the pieces before it first
         acc = over(acc, integrate_sub_pieces(subs, lo, hi, dir, per_index, piece));
-      });
+      },
+      SlabPieces::Runs);
   batch.flush();
   return acc;
 }

@@ -90,7 +90,85 @@ TEST(ExactSlab, EqualScalarsAreHomogeneousAtTheInterpolatedValue) {
   EXPECT_NEAR(v.r, 0.375 * a, 1e-14);
 }
 
-// exact_index_slab finds the plain bins' weights four at a time: it must be
+// A straight run of bins is one segment of the transfer function: on ramp_tf
+// at the integers 0..8, the runs are [0, 4] and [4, 8] (the control point at
+// 4 ends one and starts the next).
+TEST(DiscreteTfRuns, EndAtControlPoints) {
+  const DiscreteTf tf(ramp_tf(), 9);
+  for (int k = 0; k < 8; ++k) {
+    EXPECT_EQ(tf.linear_begin(k), k < 4 ? 0 : 4) << k;
+    EXPECT_EQ(tf.linear_end(k), k < 4 ? 4 : 8) << k;
+  }
+  // A control point inside a bin splits it: its run is itself.
+  const DiscreteTf off(ramp_tf(), 6);  // scalars 0, 1.6, ..., 8: the point at 4 inside bin 2
+  EXPECT_FALSE(off.sub_pieces(2).empty());
+  EXPECT_EQ(off.linear_begin(2), 2);
+  EXPECT_EQ(off.linear_end(2), 3);
+  EXPECT_EQ(off.linear_begin(1), 0);
+  EXPECT_EQ(off.linear_end(1), 2);
+  EXPECT_EQ(off.linear_begin(4), 3);
+  EXPECT_EQ(off.linear_end(3), 5);
+}
+
+// On spiky transfer functions every bin of a run is plain, the run's bins
+// share it, and the transfer function between its ends, at and between the
+// table scalars, is the line between its end samples: a run is one linear
+// piece. And runs longer than a bin are common.
+TEST(DiscreteTfRuns, AreOneLineOfPlainBins) {
+  for (unsigned seed = 0; seed < 8; ++seed)
+    for (int n : {7, 64, 256}) {
+      const TransferFunction f = test::random_spiky_tf(seed, 50.0);
+      const DiscreteTf tf(f, n);
+      int long_runs = 0;
+      for (int k = 0; k + 1 < n; ++k) {
+        const int b = tf.linear_begin(k), e = tf.linear_end(k);
+        ASSERT_TRUE(b <= k && k < e && e <= n - 1) << seed << " " << n << " " << k;
+        if (e - b == 1) continue;
+        ++long_runs;
+        const TfSample p = tf[b], q = tf[e];
+        for (int j = b; j < e; ++j) {
+          ASSERT_TRUE(tf.sub_pieces(j).empty());
+          ASSERT_EQ(tf.linear_begin(j), b);
+          ASSERT_EQ(tf.linear_end(j), e);
+          for (double x : {0.0, 0.37}) {
+            const double w = (j + x - b) / (e - b);
+            const TfSample v = f(tf.axis().scalar(j) + x * (tf.axis().scalar(j + 1) - tf.axis().scalar(j)));
+            const double scale = 1 + std::abs(p.tau) + std::abs(q.tau);
+            ASSERT_NEAR(v.tau, (1 - w) * p.tau + w * q.tau, 1e-12 * scale) << seed << " " << n << " " << j;
+            ASSERT_NEAR(v.g, (1 - w) * p.g + w * q.g, 1e-12) << seed << " " << n << " " << j;
+          }
+        }
+      }
+      if (n == 256) {
+        EXPECT_GT(long_runs, n / 4) << seed;
+      }
+    }
+}
+
+// exact_index_slab integrates a straight run as one piece: the same
+// integral as the run's bins one by one, up to roundings (which add up over
+// the bins to about 1e-12; a run that were not one line would be off by
+// orders of magnitude more).
+TEST(ExactSlab, RunsAreTheirBinsUpToRoundings) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  const auto piece = [](const TfSample& p, const TfSample& q, double d) { return linear_piece(p, q, d).forward; };
+  for (unsigned seed = 0; seed < 6; ++seed)
+    for (double max_tau : {0.05, 2.0, 300.0}) {
+      const DiscreteTf tf(test::random_spiky_tf(seed, max_tau), 256);
+      for (int i = 0; i < 200; ++i) {
+        const double u_f = 255 * u(rng), u_b = 255 * u(rng), length = std::pow(10.0, -2 + 2.5 * u(rng));
+        const SlabRgba runs = exact_index_slab(tf, u_f, u_b, length);
+        const SlabRgba bins = integrate_slab(tf, u_f, u_b, length, piece, SlabPieces::Bins);
+        ASSERT_NEAR(runs.r, bins.r, 1e-10) << u_f << " " << u_b << " " << length;
+        ASSERT_NEAR(runs.g, bins.g, 1e-10) << u_f << " " << u_b << " " << length;
+        ASSERT_NEAR(runs.b, bins.b, 1e-10) << u_f << " " << u_b << " " << length;
+        ASSERT_NEAR(runs.a, bins.a, 1e-10) << u_f << " " << u_b << " " << length;
+      }
+    }
+}
+
+// exact_index_slab finds the runs' weights four at a time: it must be
 // bit for bit the slab composited piece by piece with linear_piece, on spiky
 // transfer functions (split bins between plain ones, batches cut short by
 // them), thin and thick pieces (mixed in one batch), both directions, spans
@@ -109,7 +187,7 @@ TEST(ExactSlab, BatchedWeightsAreBitForBitThePieceByPieceComposite) {
         const double u_b = std::clamp(u(rng) < 0.5 ? u_f + span : u_f - span, 0.0, 255.0);
         const double length = std::pow(10.0, -2 + 2.5 * u(rng));
         const SlabRgba batched = exact_index_slab(tf, u_f, u_b, length);
-        const SlabRgba one_by_one = integrate_slab(tf, u_f, u_b, length, piece);
+        const SlabRgba one_by_one = integrate_slab(tf, u_f, u_b, length, piece, SlabPieces::Runs);
         ASSERT_EQ(batched.r, one_by_one.r) << u_f << " " << u_b << " " << length;
         ASSERT_EQ(batched.g, one_by_one.g) << u_f << " " << u_b << " " << length;
         ASSERT_EQ(batched.b, one_by_one.b) << u_f << " " << u_b << " " << length;

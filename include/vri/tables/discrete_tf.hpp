@@ -50,6 +50,13 @@ class DiscreteTf {
   std::span<const SubPiece> sub_pieces(int k) const {
     return {subs_.data() + sub_begin_[k], subs_.data() + sub_begin_[k + 1]};
   }
+  // The straight run of bin k: table scalars linear_begin(k) <= k and
+  // linear_end(k) >= k + 1 between which every bin is plain and on one
+  // segment of the transfer function (no control point inside or at the
+  // scalars between), so r, g, b, tau are one line from end to end; k and
+  // k + 1 for a split bin. A slab crosses such a run as one piece.
+  int linear_begin(int k) const { return linear_begin_[k]; }
+  int linear_end(int k) const { return linear_end_[k]; }
   // The split bins, ascending.
   const std::vector<int>& split_bins() const { return split_; }
   // All sub-pieces of the split bins, bin after bin (sub_begin(k) is bin k's first).
@@ -62,6 +69,7 @@ class DiscreteTf {
   std::vector<int> sub_begin_;  // n + 1 entries: bin k's sub-pieces are [sub_begin_[k], sub_begin_[k+1])
   std::vector<SubPiece> subs_;
   std::vector<int> split_;
+  std::vector<int> linear_begin_, linear_end_;  // n - 1 entries, one a bin
 };
 
 }  // namespace vri

@@ -73,12 +73,22 @@ SlabRgba integrate_sub_pieces(std::span<const SubPiece> subs, double lo, double 
   return acc;
 }
 
+// How a slab's plain bins become pieces: one a bin, or one a straight run
+// of bins (DiscreteTf::linear_end: tau and c one line along it, so its
+// integral is one piece's, and the bins one by one differ from it only by
+// roundings). Runs only where the piece function is exact for linear tau
+// and c (linear_piece, a quadrature); weighted_slab's weight times colour
+// is quadratic along a piece and is approximated bin by bin.
+enum class SlabPieces { Bins, Runs };
+
 // The pieces of the slab from continuous index u_f != u_b to u_b
 // (DiscreteTf::at_index) of length l, front to back: plain(front, back, d)
-// for each plain bin (or part of one), d its length, and split(subs, lo, hi,
-// dir, per_index) for the part [lo, hi] of a split bin (integrate_sub_pieces).
+// for each plain bin or straight run (or part of one), d its length, and
+// split(subs, lo, hi, dir, per_index) for the part [lo, hi] of a split bin
+// (integrate_sub_pieces).
 template <class Plain, class Split>
-void for_each_slab_bin(const DiscreteTf& tf, double u_f, double u_b, double length, Plain&& plain, Split&& split) {
+void for_each_slab_bin(const DiscreteTf& tf, double u_f, double u_b, double length, Plain&& plain, Split&& split,
+                       SlabPieces pieces = SlabPieces::Bins) {
   const double dir = u_b > u_f ? 1 : -1;
   const double per_index = length / std::abs(u_b - u_f);
   double u = u_f;
@@ -94,6 +104,8 @@ void for_each_slab_bin(const DiscreteTf& tf, double u_f, double u_b, double leng
     const int bin = static_cast<int>(std::min(u, next));
     const auto subs = tf.sub_pieces(bin);
     if (subs.empty()) {
+      if (pieces == SlabPieces::Runs)  // on to the end of the bin's straight run (or u_b)
+        next = dir > 0 ? std::min(double(tf.linear_end(bin)), u_b) : std::max(double(tf.linear_begin(bin)), u_b);
       const TfSample back = at(next);
       plain(front, back, std::abs(next - u) * per_index);
       front = back;
@@ -107,10 +119,12 @@ void for_each_slab_bin(const DiscreteTf& tf, double u_f, double u_b, double leng
 
 // The slab from continuous index u_f to u_b (DiscreteTf::at_index) of length
 // l, composited piece by piece with `piece(front, back, d)` -> SlabRgba: one
-// piece per plain bin (or part of one), one per sub-piece of a split bin.
-// u_f == u_b is the homogeneous slab. O(|u_b - u_f| + 1 + sub-pieces crossed).
+// piece per plain bin or straight run (`pieces`; or part of one), one per
+// sub-piece of a split bin. u_f == u_b is the homogeneous slab.
+// O(bins or runs crossed + sub-pieces crossed + 1).
 template <class PieceFn>
-SlabRgba integrate_slab(const DiscreteTf& tf, double u_f, double u_b, double length, PieceFn piece) {
+SlabRgba integrate_slab(const DiscreteTf& tf, double u_f, double u_b, double length, PieceFn piece,
+                        SlabPieces pieces = SlabPieces::Bins) {
   if (u_f == u_b) return homogeneous_slab(tf.at_index(u_f), length);
   SlabRgba acc;
   for_each_slab_bin(
@@ -118,16 +132,18 @@ SlabRgba integrate_slab(const DiscreteTf& tf, double u_f, double u_b, double len
       [&](const TfSample& front, const TfSample& back, double d) { acc = over(acc, piece(front, back, d)); },
       [&](std::span<const SubPiece> subs, double lo, double hi, double dir, double per_index) {
         acc = over(acc, integrate_sub_pieces(subs, lo, hi, dir, per_index, piece));
-      });
+      },
+      pieces);
   return acc;
 }
 
-// integrate_slab with linear_piece: the exact slab integral at any scalars,
-// and the same at continuous indices u_f, u_b (DiscreteTf::at_index). The
-// plain bins' weights are found four at a time (the series of
-// piece_weights.hpp on GCC vectors: the same operations lane by lane, so the
-// same bits as linear_piece): the partial last slab of a ray that leaves the
-// volume through its data crosses a dozen bins or more.
+// integrate_slab with linear_piece over straight runs (SlabPieces::Runs):
+// the exact slab integral at any scalars, and the same at continuous indices
+// u_f, u_b (DiscreteTf::at_index). The runs' weights are found four at a
+// time (the series of piece_weights.hpp on GCC vectors: the same operations
+// lane by lane, so the same bits as linear_piece): the partial last slab of
+// a ray that leaves the volume through its data crosses a dozen bins or
+// more, most of them on a few straight runs.
 SlabRgba exact_slab(const DiscreteTf& tf, double s_f, double s_b, double length);
 SlabRgba exact_index_slab(const DiscreteTf& tf, double u_f, double u_b, double length);
 
