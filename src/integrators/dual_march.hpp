@@ -3,6 +3,7 @@
 // double path and its float path: which segments empty-space skipping leaves
 // out, and the float path itself (unlit and lit in both modes).
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
@@ -48,10 +49,15 @@ class SegmentSkip {
   double t_max_, empty_until_ = -kInf, t_check_ = -kInf;
 };
 
-// The (l, s_f, s_m, s_b) table in float: each length slice read as preint2's
-// float lookup reads its table (trilinear, 4-float vectors), the two slices
-// next to l blended linearly. With interpolated lighting the weighted tables
-// (middle, back) are read at the same spot.
+// The (l, s_f, s_m, s_b) table in float: the two length slices next to l and,
+// in each, the eight entries around (s_f, s_m, s_b) on preint2's float axis
+// (SecondOrderFloatLookup's layout: rows of entries along s_b, 4 floats
+// each). The blend takes the slices first, entry by entry, then s_m, s_f
+// and s_b last: in that order the two entries of a row (b, b + 1) stay
+// side by side as one 8-float vector until the end, which is how the
+// packets (float_packet_dual.cpp) blend each lane, with the same operations.
+// With interpolated lighting the weighted tables (middle, back) are read at
+// the same spot.
 class DualFloatLookup {
  public:
   explicit DualFloatLookup(const SecondOrderLengthTable& full, const SecondOrderLengthTable* middle = nullptr,
@@ -61,37 +67,56 @@ class DualFloatLookup {
       slices_.emplace_back(full.slices()[i]);
       weighted_.push_back({middle ? middle->slices()[i].data() : nullptr, back ? back->slices()[i].data() : nullptr});
     }
-    // Every slice is built on the one discrete transfer function: one axis,
-    // which the packets (march_dual_packet) place their samples on once.
+    // Every slice is built on the one discrete transfer function: one axis
+    // and one layout, on which a spot is found once for both slices.
     for (const SecondOrderFloatLookup& slice : slices_)
       if (slice.axis().lo() != slices_[0].axis().lo() || slice.axis().scale() != slices_[0].axis().scale() ||
           slice.size() != slices_[0].size())
         throw std::logic_error("DualFloatLookup: slices on different scalar axes");
   }
   struct Spot {
-    int i;  // slices i and i + 1
-    float w;
-    SecondOrderFloatLookup::Spot lo, hi;
+    int i;            // slices i and i + 1
+    float wl;         // slice i + 1's weight
+    std::size_t at;   // entry (f, m, b), in floats from a slice's start
+    float wf, wm, wb;
   };
+  // Finding a spot starts loading its entries (four rows in each slice).
   Spot find(double length, float s_f, float s_m, float s_b) const {
     const LengthBracket l = length_bracket(length, max_length_, static_cast<int>(slices_.size()));
-    const std::array<FloatAxis::Place, 3> p = {slices_[l.i].place(s_f), slices_[l.i].place(s_m), slices_[l.i].place(s_b)};
-    return {l.i, static_cast<float>(l.w), slices_[l.i].find(p), slices_[l.i + 1].find(p)};
+    const SecondOrderFloatLookup& axes = slices_[0];
+    const FloatAxis::Place f = axes.place(s_f), m = axes.place(s_m), b = axes.place(s_b);
+    const std::size_t at = axes.offset(f.i, m.i, b.i);
+    for (int i : {l.i, l.i + 1})
+      for (std::size_t add : {std::size_t(0), row(), plane(), plane() + row()})
+        __builtin_prefetch(slices_[i].data() + at + add);
+    return {l.i, static_cast<float>(l.w), at, f.w, m.w, b.w};
   }
+  // Table k (0 the unweighted one, 1 middle, 2 back) at the spot.
+  Float4 blend(const Spot& spot, int k = 0) const {
+    const float *lo = data(spot.i, k) + spot.at, *hi = data(spot.i + 1, k) + spot.at;
+    const auto lerp = [](Float4 a, Float4 b, float w) { return a + w * (b - a); };
+    Float4 r[2][2][2];  // [f][m][b]: the rows' entries, slices blended
+    for (int f = 0; f < 2; ++f)
+      for (int m = 0; m < 2; ++m)
+        for (int b = 0; b < 2; ++b) {
+          const std::size_t add = f * plane() + m * row() + 4 * b;
+          r[f][m][b] = lerp(load_float4(lo + add), load_float4(hi + add), spot.wl);
+        }
+    Float4 e[2];  // entries b and b + 1, blended along s_m, then s_f
+    for (int b = 0; b < 2; ++b)
+      e[b] = lerp(lerp(r[0][0][b], r[0][1][b], spot.wm), lerp(r[1][0][b], r[1][1][b], spot.wm), spot.wf);
+    return lerp(e[0], e[1], spot.wb);
+  }
+
   // What `find` reads, for the ray packets (float_packet_dual.cpp).
   int lengths() const { return static_cast<int>(slices_.size()); }
   const SecondOrderFloatLookup& slice(int i) const { return slices_[i]; }
   // Slice i of table k (0 the unweighted one, 1 middle, 2 back), all in slice i's layout.
   const float* data(int i, int k) const { return k == 0 ? slices_[i].data() : weighted_[i][k - 1]; }
   double max_length() const { return max_length_; }
-  // Table k: 0 the unweighted (full) one, 1 middle, 2 back.
-  Float4 blend(const Spot& spot, int k = 0) const {
-    const auto one = [&](int slice, const SecondOrderFloatLookup::Spot& at) {
-      return k == 0 ? slices_[slice].blend(at) : slices_[slice].blend(at, weighted_[slice][k - 1]);
-    };
-    const Float4 lo = one(spot.i, spot.lo), hi = one(spot.i + 1, spot.hi);
-    return lo + spot.w * (hi - lo);
-  }
+  // Floats from entry (f, m, b) to (f, m + 1, b) and to (f + 1, m, b), in every slice.
+  std::size_t row() const { return slices_[0].row(); }
+  std::size_t plane() const { return slices_[0].plane(); }
 
  private:
   std::vector<SecondOrderFloatLookup> slices_;

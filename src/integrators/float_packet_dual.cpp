@@ -97,17 +97,40 @@ void leap_to(DualLanes& L, int l, double x) {
   L.ta[l] = ta;
 }
 
-// DualFloatLookup::blend of table k for the 8 lanes: each lane's length
-// slices j and j + 1 at its entry `first`, blended in l by wlen.
-VRI_AVX2 void dual_blend8(const DualFloatLookup& table, int k, const int* slice, const int* first, const __m256 (&w)[3],
-                          __m256 wlen, int row, int plane, __m256 v[4]) {
-  const float *at_lo[kPacket], *at_hi[kPacket];
+// The spots' rows in both slices of table 0 (DualFloatLookup::find's
+// prefetches), for the 8 lanes: asked for all at once, their loads overlap.
+VRI_AVX2 void prefetch8(const DualFloatLookup& table, const int* slice, const int* first) {
+  const std::size_t row = table.row(), plane = table.plane();
   for (int l = 0; l < kPacket; ++l)
-    at_lo[l] = table.data(slice[l], k) + first[l], at_hi[l] = table.data(slice[l] + 1, k) + first[l];
-  __m256 v_lo[4], v_hi[4];
-  blend8(LaneCorners{at_lo}, row, plane, w[0], w[1], w[2], v_lo);
-  blend8(LaneCorners{at_hi}, row, plane, w[0], w[1], w[2], v_hi);
-  for (int c = 0; c < 4; ++c) v[c] = lerp(v_lo[c], v_hi[c], wlen);
+    for (const float* at : {table.data(slice[l], 0) + first[l], table.data(slice[l] + 1, 0) + first[l]})
+      for (std::size_t add : {std::size_t(0), row, plane, plane + row}) __builtin_prefetch(at + add);
+}
+
+// DualFloatLookup::blend of table k for the 8 lanes, lane by lane in its
+// order: each row's two entries (b, b + 1) as one 8-float vector, the
+// slices blended first (wl), then s_m, s_f, and s_b across the vector's
+// halves; the lanes' results transposed into channels at the end.
+VRI_AVX2 void dual_blend8(const DualFloatLookup& table, int k, const int* slice, const int* first,
+                          const float* const (&w)[4], __m256 v[4]) {
+  const std::size_t row = table.row(), plane = table.plane();
+  __m128 e[kPacket];
+  for (int l = 0; l < kPacket; ++l) {
+    const float *lo = table.data(slice[l], k) + first[l], *hi = table.data(slice[l] + 1, k) + first[l];
+    const __m256 wl = _mm256_broadcast_ss(w[0] + l), wf = _mm256_broadcast_ss(w[1] + l),
+                 wm = _mm256_broadcast_ss(w[2] + l);
+    __m256 r[2][2];
+    for (int f = 0; f < 2; ++f)
+      for (int m = 0; m < 2; ++m) {
+        const std::size_t add = f * plane + m * row;
+        r[f][m] = lerp(_mm256_loadu_ps(lo + add), _mm256_loadu_ps(hi + add), wl);
+      }
+    const __m256 p = lerp(lerp(r[0][0], r[0][1], wm), lerp(r[1][0], r[1][1], wm), wf);
+    const __m128 b0 = _mm256_castps256_ps128(p), b1 = _mm256_extractf128_ps(p, 1);
+    e[l] = _mm_add_ps(b0, _mm_mul_ps(_mm_broadcast_ss(w[3] + l), _mm_sub_ps(b1, b0)));
+  }
+  __m256 q[4];
+  for (int l = 0; l < 4; ++l) q[l] = _mm256_set_m128(e[l + 4], e[l]);
+  transpose8(q, v);
 }
 
 template <class Value>
@@ -148,7 +171,6 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
   const SecondOrderFloatLookup& slice0 = table.slice(0);
   const TableAxis8 axis = axis8(slice0.axis());
   const __m256i entries = _mm256_set1_epi32(slice0.size());
-  const int row = static_cast<int>(slice0.row()), plane = static_cast<int>(slice0.plane());
   const __m256d max_length = _mm256_set1_pd(table.max_length()), top_slice = _mm256_set1_pd(table.lengths() - 1);
   while (active) {
     walk_step(L, 0, last);
@@ -193,14 +215,15 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
       // The front, middle and back samples, their places on the table axis
       // and, lit, their gradients.
       __m256i i[3];
-      __m256 w[3], grad[3][3]{};
+      __m256 w[3];
+      Cells8 cells[3];
       const double scale[3] = {0, 0.5, 1};
       for (int k = 0; k < 3; ++k) {
-        const Cells8 cell{load(at), fraction8(L, 0, scale[k]), fraction8(L, 1, scale[k]), fraction8(L, 2, scale[k])};
+        const Cells8& cell = cells[k] = {load(at), fraction8(L, 0, scale[k]), fraction8(L, 1, scale[k]),
+                                         fraction8(L, 2, scale[k])};
         const __m256 s = lerp(lerp(lerp(lo[0], hi[0], cell.fx), lerp(lo[1], hi[1], cell.fx), cell.fy),
                               lerp(lerp(lo[2], hi[2], cell.fx), lerp(lo[3], hi[3], cell.fx), cell.fy), cell.fz);
         place8(axis, s, i[k], w[k]);
-        if (shading) gradient8(*shading, cell, grad[k]);
       }
       const __m256i entry = spot8<2>(i, entries);
       // length_bracket: slices j and j + 1, weight wl.
@@ -216,13 +239,21 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
       alignas(32) int slice[kPacket], first[kPacket];
       store(slice, _mm256_castps_si256(_mm256_and_ps(_mm256_castsi256_ps(_mm256_set_m128i(j[1], j[0])), m)));
       store(first, _mm256_castps_si256(_mm256_and_ps(_mm256_castsi256_ps(entry), m)));
-      const __m256 wlen = _mm256_set_m128(wl[1], wl[0]);
+      prefetch8(table, slice, first);
+      alignas(32) float weight[4][kPacket];  // wl, wf, wm, wb
+      store(weight[0], _mm256_set_m128(wl[1], wl[0]));
+      for (int k = 0; k < 3; ++k) store(weight[k + 1], w[k]);
+      const float* const weights[4] = {weight[0], weight[1], weight[2], weight[3]};
+      // Lit, the gradients at the three samples, while the entries load.
+      __m256 grad[3][3]{};
+      if (shading)
+        for (int k = 0; k < 3; ++k) gradient8(*shading, cells[k], grad[k]);
       __m256 e[4];
       const __m256 d[3] = {load(L.d[0]), load(L.d[1]), load(L.d[2])};
       if (!shading) {
-        dual_blend8(table, 0, slice, first, w, wlen, row, plane, e);
+        dual_blend8(table, 0, slice, first, weights, e);
       } else if (!interpolated) {  // one normal, the mean of the three gradients
-        dual_blend8(table, 0, slice, first, w, wlen, row, plane, e);
+        dual_blend8(table, 0, slice, first, weights, e);
         __m256 mean[3], a, b;
         for (int c = 0; c < 3; ++c)
           mean[c] = _mm256_mul_ps(_mm256_add_ps(_mm256_add_ps(grad[0][c], grad[1][c]), grad[2][c]),
@@ -231,9 +262,9 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
         lit_by8(a, b, e);
       } else {
         __m256 full[4], middle[4], back[4], a[3], b[3];
-        dual_blend8(table, 0, slice, first, w, wlen, row, plane, full);
-        dual_blend8(table, 1, slice, first, w, wlen, row, plane, middle);
-        dual_blend8(table, 2, slice, first, w, wlen, row, plane, back);
+        dual_blend8(table, 0, slice, first, weights, full);
+        dual_blend8(table, 1, slice, first, weights, middle);
+        dual_blend8(table, 2, slice, first, weights, back);
         for (int k = 0; k < 3; ++k) terms8(*shading, grad[k], d, a[k], b[k]);
         lagrange8(full, middle, back, a, b, e);
       }
