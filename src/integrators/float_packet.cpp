@@ -154,6 +154,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
       }
     }
     store(L.entry, spot8<steps>(next_i, n8));
+    if constexpr (steps == 2) prefetch_rows8(table, L.entry);
     store(L.k, k1);
   }
 }
