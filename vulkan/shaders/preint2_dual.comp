@@ -62,11 +62,27 @@ vec3 d;
 #include "cell_walk.glsl"
 
 // The table at slab length l and scalars (s_f, s_m, s_b): the two slices
-// around l (length_bracket, slab_table.hpp) blended linearly.
+// around l (length_bracket, slab_table.hpp) blended first, entry by entry,
+// then along s_m, s_f and s_b last (DualFloatLookup::blend's order,
+// src/integrators/dual_march.hpp).
 vec4 lookup(int which, float l, Place f, Place m, Place b) {
   const Place at = length_place(l, p.max_length, p.lengths);
-  const uint n = uint(p.table_n), slice = n * n * n;
-  return between(blend_at(which, uint(at.i) * slice, f, m, b), blend_at(which, uint(at.i + 1) * slice, f, m, b), at);
+  const uint n = uint(p.table_n), row = n, plane = n * n, slice = n * plane;
+  const uint first = uint(at.i) * slice + uint(f.i) * plane + uint(m.i) * row + uint(b.i);
+  vec4 e[2];  // entries b and b + 1
+  for (uint k = 0u; k < 2u; ++k) {
+    const uint x = first + k;
+    const vec4 r00 = between(entry_of(which, x), entry_of(which, x + slice), at);
+    const vec4 r01 = between(entry_of(which, x + row), entry_of(which, x + row + slice), at);
+    const vec4 r10 = between(entry_of(which, x + plane), entry_of(which, x + plane + slice), at);
+    const vec4 r11 = between(entry_of(which, x + plane + row), entry_of(which, x + plane + row + slice), at);
+    precise vec4 c0 = r00 + m.w * (r01 - r00);
+    precise vec4 c1 = r10 + m.w * (r11 - r10);
+    precise vec4 v = c0 + f.w * (c1 - c0);
+    e[k] = v;
+  }
+  precise vec4 v = e[0] + b.w * (e[1] - e[0]);
+  return v;
 }
 
 void main() {

@@ -53,11 +53,11 @@ vec4 blend_at(int which, uint base, Place f, Place b) {
   return v;
 }
 
-// The second-order table whose first entry is entry `base` of `which`
-// (preint2-dual's tables of several lengths, one after another).
-vec4 blend_at(int which, uint base, Place f, Place m, Place b) {
+// The second-order table `which` (preint2's; preint2-dual reads its tables
+// of several lengths in its own order, preint2_dual.comp).
+vec4 blend(int which, Place f, Place m, Place b) {
   const uint n = uint(p.table_n), row = n, plane = n * n;
-  const uint e = base + uint(f.i) * plane + uint(m.i) * row + uint(b.i);
+  const uint e = uint(f.i) * plane + uint(m.i) * row + uint(b.i);
   const vec4 c00 = along(which, e, b.w), c01 = along(which, e + row, b.w);
   const vec4 c10 = along(which, e + plane, b.w), c11 = along(which, e + plane + row, b.w);
   precise vec4 c0 = c00 + m.w * (c01 - c00);
@@ -67,4 +67,3 @@ vec4 blend_at(int which, uint base, Place f, Place m, Place b) {
 }
 
 vec4 blend(int which, Place f, Place b) { return blend_at(which, 0u, f, b); }
-vec4 blend(int which, Place f, Place m, Place b) { return blend_at(which, 0u, f, m, b); }
