@@ -1,0 +1,92 @@
+// DualFloatLookup (src/integrators/dual_march.hpp): preint2-dual's
+// (l, s_f, s_m, s_b) table read in float, the two length slices blended
+// first, then s_m, s_f and s_b. Quadrilinear interpolation reproduces any
+// function that is linear in each index separately, whatever the order of
+// its blends: on such a table the lookup is the function itself at the
+// continuous indices, up to float roundings, in every table it reads.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <random>
+#include <vector>
+
+#include "integrators/dual_march.hpp"
+#include "vri/tables/second_order_table.hpp"
+
+namespace vri {
+namespace {
+
+constexpr int kN = 9, kLengths = 5;
+constexpr double kMaxLength = 2;
+
+// Channel c of a multilinear function of the continuous indices (length
+// slice, front, middle, back), between 0.05 and 1.
+double multilinear(int c, int table, double l, double f, double m, double b) {
+  const double k = 1 + 0.5 * table + 0.25 * c;
+  return 0.05 + 0.01 * k * (2 * l + f + 3 * m + b) + 2e-4 * k * l * f * m * b - 1e-3 * f * b + 5e-4 * l * m;
+}
+
+SecondOrderLengthTable filled(int table) {
+  const ScalarAxis axis{0, kN - 1, kN};  // index = scalar
+  std::vector<SecondOrderTable> slices;
+  for (int i = 0; i < kLengths; ++i) {
+    SecondOrderTable slice(axis, kMaxLength * i / (kLengths - 1), 1);
+    for (int f = 0; f < kN; ++f)
+      for (int m = 0; m < kN; ++m)
+        for (int b = 0; b < kN; ++b)
+          for (int c = 0; c < 4; ++c) slice.entry(f, m, b)[c] = static_cast<float>(multilinear(c, table, i, f, m, b));
+    slices.push_back(std::move(slice));
+  }
+  return SecondOrderLengthTable(std::move(slices), kMaxLength);
+}
+
+TEST(DualFloatLookup, ReproducesMultilinearTablesInEveryTable) {
+  const SecondOrderLengthTable full = filled(0), middle = filled(1), back = filled(2);
+  const detail::DualFloatLookup lookup(full, &middle, &back);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> length(0, kMaxLength), scalar(0, kN - 1);
+  double worst = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const double l = length(rng);
+    const std::array<float, 3> s = {static_cast<float>(scalar(rng)), static_cast<float>(scalar(rng)),
+                                    static_cast<float>(scalar(rng))};
+    const auto spot = lookup.find(l, s[0], s[1], s[2]);
+    // The slice index as length_bracket computes it, in float as the spot keeps it.
+    const double u = spot.i + static_cast<double>(spot.wl);
+    EXPECT_NEAR(u, l / kMaxLength * (kLengths - 1), 1e-6);
+    for (int table = 0; table < 3; ++table) {
+      const Float4 v = lookup.blend(spot, table);
+      for (int c = 0; c < 4; ++c) {
+        const double want = multilinear(c, table, u, s[0], s[1], s[2]);
+        worst = std::max(worst, std::abs(v[c] - want));
+        ASSERT_NEAR(v[c], want, 2e-6) << "table " << table << " channel " << c << " at l " << l;
+      }
+    }
+    // The double lookup, which blends in another order, agrees.
+    const Rgba d = full.lookup(l, s[0], s[1], s[2]);
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(lookup.blend(spot)[c], d[c], 2e-6);
+  }
+  EXPECT_GT(worst, 0);  // float roundings, not a lookup that reads the entries exactly
+}
+
+// Ends of the axes: a length at or past max_length reads the last two
+// slices with all weight on the last; scalars past the axis clamp to its
+// ends, as the double lookup does.
+TEST(DualFloatLookup, ClampsAtTheEndsOfItsAxes) {
+  const SecondOrderLengthTable full = filled(0);
+  const detail::DualFloatLookup lookup(full);
+  for (const double l : {kMaxLength, 3 * kMaxLength}) {
+    const auto spot = lookup.find(l, -4.0f, 20.0f, 8.0f);
+    EXPECT_EQ(spot.i, kLengths - 2);
+    EXPECT_EQ(spot.wl, 1.0f);
+    const Float4 v = lookup.blend(spot);
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(v[c], multilinear(c, 0, kLengths - 1, 0, kN - 1, kN - 1), 1e-6);
+  }
+  const auto zero_length = lookup.find(0, 1.5f, 2.5f, 3.5f);
+  EXPECT_EQ(zero_length.i, 0);
+  EXPECT_EQ(zero_length.wl, 0.0f);
+  EXPECT_NEAR(lookup.blend(zero_length)[3], multilinear(3, 0, 0, 1.5, 2.5, 3.5), 1e-6);
+}
+
+}  // namespace
+}  // namespace vri
