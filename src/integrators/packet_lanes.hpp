@@ -169,13 +169,6 @@ VRI_AVX2 void corner(const float* data, const int* entry, int add, __m256 channe
   for (int l = 0; l < 4; ++l) q[l] = _mm256_loadu2_m128(data + entry[l + 4] + add, data + entry[l] + add);
   transpose8(q, channel);
 }
-// The same for entries at[l] + add, each lane in its own table
-// (preint2-dual's length slices).
-VRI_AVX2 void corner(const float* const* at, int add, __m256 channel[4]) {
-  __m256 q[4];
-  for (int l = 0; l < 4; ++l) q[l] = _mm256_loadu2_m128(at[l + 4] + add, at[l] + add);
-  transpose8(q, channel);
-}
 
 // Lanes 0 1 4 5 2 3 6 7 (what shuffle_ps leaves) back in order.
 VRI_AVX2 __m256 order(__m256 v) {
@@ -342,34 +335,20 @@ VRI_AVX2 void blend8(const FloatLookup& table, const float* data, const Lanes<1>
   const __m256 wf = load(L.w[0]), wb = load(L.w[1]);
   for (int c = 0; c < 4; ++c) v[c] = lerp(lerp(e00[c], e01[c], wb), lerp(e10[c], e11[c], wb), wf);
 }
-// SecondOrderFloatLookup::blend of the 8 lanes at the entries `Corners`
-// reads (corners(add, channels): the entries add floats on; row and plane:
-// the table's strides), weights wf, wm, wb.
-template <class Corners>
-VRI_AVX2 void blend8(const Corners& corners, int row, int plane, __m256 wf, __m256 wm, __m256 wb, __m256 v[4]) {
+// SecondOrderFloatLookup::blend of the 8 lanes at their entries in the
+// table `data` of the lookup's layout.
+VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const float* data, const Lanes<2>& L, __m256 v[4]) {
+  const int row = static_cast<int>(table.row()), plane = static_cast<int>(table.plane());
+  const __m256 wf = load(L.w[0]), wm = load(L.w[1]), wb = load(L.w[2]);
   __m256 c[2][2][4];  // along s_b at (f, m), f and m each 0 or 1
   for (int f = 0; f < 2; ++f)
     for (int m = 0; m < 2; ++m) {
       __m256 lo[4], hi[4];
-      corners(f * plane + m * row, lo);
-      corners(f * plane + m * row + 4, hi);
+      corner(data, L.entry, f * plane + m * row, lo);
+      corner(data, L.entry, f * plane + m * row + 4, hi);
       for (int ch = 0; ch < 4; ++ch) c[f][m][ch] = lerp(lo[ch], hi[ch], wb);
     }
   for (int ch = 0; ch < 4; ++ch) v[ch] = lerp(lerp(c[0][0][ch], c[0][1][ch], wm), lerp(c[1][0][ch], c[1][1][ch], wm), wf);
-}
-// The entries of one table at the lanes' entries, or of each lane's own table.
-struct TableCorners {
-  const float* data;
-  const int* entry;
-  VRI_AVX2 void operator()(int add, __m256 channel[4]) const { corner(data, entry, add, channel); }
-};
-struct LaneCorners {
-  const float* const* at;
-  VRI_AVX2 void operator()(int add, __m256 channel[4]) const { corner(at, add, channel); }
-};
-VRI_AVX2 void blend8(const SecondOrderFloatLookup& table, const float* data, const Lanes<2>& L, __m256 v[4]) {
-  blend8(TableCorners{data, L.entry}, static_cast<int>(table.row()), static_cast<int>(table.plane()), load(L.w[0]),
-         load(L.w[1]), load(L.w[2]), v);
 }
 
 // exp_neg (float_math.hpp) on 8 lanes, the same operations in the same order.
