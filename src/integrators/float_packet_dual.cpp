@@ -133,42 +133,6 @@ VRI_AVX2 void dual_blend8(const DualFloatLookup& table, int k, const int* slice,
   transpose8(q, v);
 }
 
-// The lanes' segments sampled in one step of the march, composited in the
-// next (march_dual): where each lane reads the table (its rows were asked
-// for when it was sampled, and arrive meanwhile) and, lit, the shading
-// terms of its samples (`sampled` lighting: the mean gradient's in a[0],
-// b[0]; `interpolated`: each sample's).
-struct PendingSegments {
-  unsigned lanes = 0;
-  alignas(32) int slice[kPacket], first[kPacket];
-  alignas(32) float weight[4][kPacket];  // wl, wf, wm, wb
-  __m256 a[3], b[3];
-};
-
-// The pending segments' colours (the scalar march's, lane by lane) composited
-// into the lanes in `lanes` (others composite zeros: C + T 0 = C and
-// T (1 - 0) = T exactly).
-VRI_AVX2 void composite_pending(const PendingSegments& p, unsigned lanes, const DualFloatLookup& table,
-                                const FloatShading* shading, bool interpolated, Composited8& L) {
-  const float* const weights[4] = {p.weight[0], p.weight[1], p.weight[2], p.weight[3]};
-  __m256 e[4];
-  if (!shading) {
-    dual_blend8(table, 0, p.slice, p.first, weights, e);
-  } else if (!interpolated) {
-    dual_blend8(table, 0, p.slice, p.first, weights, e);
-    lit_by8(p.a[0], p.b[0], e);
-  } else {
-    __m256 full[4], middle[4], back[4];
-    dual_blend8(table, 0, p.slice, p.first, weights, full);
-    dual_blend8(table, 1, p.slice, p.first, weights, middle);
-    dual_blend8(table, 2, p.slice, p.first, weights, back);
-    lagrange8(full, middle, back, p.a, p.b, e);
-  }
-  const __m256 m = lane_mask(lanes);
-  for (__m256& x : e) x = _mm256_and_ps(x, m);
-  composite8(L, e);
-}
-
 template <class Value>
 __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const Value* values,
                                                 const DualFloatLookup& table, const FloatShading* shading,
@@ -208,25 +172,19 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
   const TableAxis8 axis = axis8(slice0.axis());
   const __m256i entries = _mm256_set1_epi32(slice0.size());
   const __m256d max_length = _mm256_set1_pd(table.max_length()), top_slice = _mm256_set1_pd(table.lengths() - 1);
-  // Each step samples the lanes' next segments and asks for their table rows,
-  // then composites the segments sampled in the step before, whose rows have
-  // had the sampling's time to arrive: a lane's segments are composited in
-  // order, one step late. The termination test, which the scalar march makes
-  // at each visit, comes after that composite: a lane whose transmittance has
-  // fallen below it drops the segment just sampled and stops, as the scalar
-  // march stops at that segment's visit.
-  PendingSegments segments[2];
-  PendingSegments *pending = &segments[0], *next = &segments[1];
   while (active) {
     walk_step(L, 0, last);
     walk_step(L, 1, last);
-    // Per lane, as the scalar march's visit: leave out a skipped segment;
-    // every lane moves on to tb.
-    unsigned ended = 0;
-    next->lanes = 0;
+    // Per lane, as the scalar march's visit: stop below the termination, then
+    // leave out a skipped segment; every lane moves on to tb.
+    unsigned sampled = 0, ended = 0;
     for (unsigned m = active; m; m &= m - 1) {
       const int l = __builtin_ctz(m);
       if (L.tb[l] > L.ta[l]) {
+        if (L.T[l] < leap.termination) {
+          finish(l);
+          continue;
+        }
         if (skip[l]->skipped(L.ta[l], L.tb[l])) {
           // Past the empty run at once (its segments all add nothing).
           if (const double x = skip[l]->empty_until(); x < L.t1[l]) {
@@ -236,13 +194,13 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
           }
           continue;
         }
-        next->lanes |= 1u << l;
+        sampled |= 1u << l;
       }
       L.ta[l] = L.tb[l];
       if (!(L.ta[l] < L.t1[l])) ended |= 1u << l;
     }
-    if (next->lanes) {
-      const __m256 m = lane_mask(next->lanes);
+    if (sampled) {
+      const __m256 m = lane_mask(sampled);
       // The cell's first corner (0 in lanes not sampled: a valid read).
       __m256i index = _mm256_add_epi32(
           load(L.cell[0]), _mm256_add_epi32(_mm256_mullo_epi32(load(L.cell[1]), _mm256_set1_epi32(sy)),
@@ -254,7 +212,8 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
       pair8(values + sy, at, lo[1], hi[1]);
       pair8(values + sz, at, lo[2], hi[2]);
       pair8(values + sz + sy, at, lo[3], hi[3]);
-      // The front, middle and back samples and their places on the table axis.
+      // The front, middle and back samples, their places on the table axis
+      // and, lit, their gradients.
       __m256i i[3];
       __m256 w[3];
       Cells8 cells[3];
@@ -277,38 +236,43 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
         j[half] = _mm_min_epi32(_mm256_cvttpd_epi32(u), _mm_set1_epi32(table.lengths() - 2));
         wl[half] = _mm256_cvtpd_ps(_mm256_sub_pd(u, _mm256_cvtepi32_pd(j[half])));
       }
-      store(next->slice, _mm256_castps_si256(_mm256_and_ps(_mm256_castsi256_ps(_mm256_set_m128i(j[1], j[0])), m)));
-      store(next->first, _mm256_castps_si256(_mm256_and_ps(_mm256_castsi256_ps(entry), m)));
-      prefetch8(table, next->slice, next->first);
-      store(next->weight[0], _mm256_set_m128(wl[1], wl[0]));
-      for (int k = 0; k < 3; ++k) store(next->weight[k + 1], w[k]);
-      if (shading) {  // the shading terms: of the mean gradient, or of each sample's
-        __m256 grad[3][3];
+      alignas(32) int slice[kPacket], first[kPacket];
+      store(slice, _mm256_castps_si256(_mm256_and_ps(_mm256_castsi256_ps(_mm256_set_m128i(j[1], j[0])), m)));
+      store(first, _mm256_castps_si256(_mm256_and_ps(_mm256_castsi256_ps(entry), m)));
+      prefetch8(table, slice, first);
+      alignas(32) float weight[4][kPacket];  // wl, wf, wm, wb
+      store(weight[0], _mm256_set_m128(wl[1], wl[0]));
+      for (int k = 0; k < 3; ++k) store(weight[k + 1], w[k]);
+      const float* const weights[4] = {weight[0], weight[1], weight[2], weight[3]};
+      // Lit, the gradients at the three samples, while the entries load.
+      __m256 grad[3][3]{};
+      if (shading)
         for (int k = 0; k < 3; ++k) gradient8(*shading, cells[k], grad[k]);
-        const __m256 d[3] = {load(L.d[0]), load(L.d[1]), load(L.d[2])};
-        if (!interpolated) {
-          __m256 mean[3];
-          for (int c = 0; c < 3; ++c)
-            mean[c] = _mm256_mul_ps(_mm256_add_ps(_mm256_add_ps(grad[0][c], grad[1][c]), grad[2][c]),
-                                    _mm256_set1_ps(1.0f / 3));
-          terms8(*shading, mean, d, next->a[0], next->b[0]);
-        } else {
-          for (int k = 0; k < 3; ++k) terms8(*shading, grad[k], d, next->a[k], next->b[k]);
-        }
+      __m256 e[4];
+      const __m256 d[3] = {load(L.d[0]), load(L.d[1]), load(L.d[2])};
+      if (!shading) {
+        dual_blend8(table, 0, slice, first, weights, e);
+      } else if (!interpolated) {  // one normal, the mean of the three gradients
+        dual_blend8(table, 0, slice, first, weights, e);
+        __m256 mean[3], a, b;
+        for (int c = 0; c < 3; ++c)
+          mean[c] = _mm256_mul_ps(_mm256_add_ps(_mm256_add_ps(grad[0][c], grad[1][c]), grad[2][c]),
+                                  _mm256_set1_ps(1.0f / 3));
+        terms8(*shading, mean, d, a, b);
+        lit_by8(a, b, e);
+      } else {
+        __m256 full[4], middle[4], back[4], a[3], b[3];
+        dual_blend8(table, 0, slice, first, weights, full);
+        dual_blend8(table, 1, slice, first, weights, middle);
+        dual_blend8(table, 2, slice, first, weights, back);
+        for (int k = 0; k < 3; ++k) terms8(*shading, grad[k], d, a[k], b[k]);
+        lagrange8(full, middle, back, a, b, e);
       }
+      // Lanes not sampled composite zeros: C + T 0 = C and T (1 - 0) = T exactly.
+      for (__m256& x : e) x = _mm256_and_ps(x, m);
+      composite8(L, e);
     }
-    if (pending->lanes) composite_pending(*pending, pending->lanes, table, shading, interpolated, L);
-    // Below the termination now: the segment just sampled adds nothing.
-    const unsigned stopped = active & below8(L, leap.termination);
-    next->lanes &= ~stopped;
-    ended = (ended & active) & ~stopped;
-    // A lane at its ray's end composites its last segment at once.
-    if (const unsigned last_ones = ended & next->lanes) {
-      composite_pending(*next, last_ones, table, shading, interpolated, L);
-      next->lanes &= ~last_ones;
-    }
-    for (unsigned m = stopped | ended; m; m &= m - 1) finish(__builtin_ctz(m));
-    std::swap(pending, next);
+    for (unsigned m = ended & active; m; m &= m - 1) finish(__builtin_ctz(m));
   }
 }
 
