@@ -86,9 +86,8 @@ class DualFloatLookup {
     const SecondOrderFloatLookup& axes = slices_[0];
     const FloatAxis::Place f = axes.place(s_f), m = axes.place(s_m), b = axes.place(s_b);
     const std::size_t at = axes.offset(f.i, m.i, b.i);
-    for (int i : {l.i, l.i + 1})
-      for (std::size_t add : {std::size_t(0), row(), plane(), plane() + row()})
-        __builtin_prefetch(slices_[i].data() + at + add);
+    slices_[l.i].prefetch(at);
+    slices_[l.i + 1].prefetch(at);
     return {l.i, static_cast<float>(l.w), at, f.w, m.w, b.w};
   }
   // Table k (0 the unweighted one, 1 middle, 2 back) at the spot.

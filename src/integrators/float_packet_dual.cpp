@@ -100,10 +100,10 @@ void leap_to(DualLanes& L, int l, double x) {
 // The spots' rows in both slices of table 0 (DualFloatLookup::find's
 // prefetches), for the 8 lanes: asked for all at once, their loads overlap.
 VRI_AVX2 void prefetch8(const DualFloatLookup& table, const int* slice, const int* first) {
-  const std::size_t row = table.row(), plane = table.plane();
-  for (int l = 0; l < kPacket; ++l)
-    for (const float* at : {table.data(slice[l], 0) + first[l], table.data(slice[l] + 1, 0) + first[l]})
-      for (std::size_t add : {std::size_t(0), row, plane, plane + row}) __builtin_prefetch(at + add);
+  for (int l = 0; l < kPacket; ++l) {
+    table.slice(slice[l]).prefetch(first[l]);
+    table.slice(slice[l] + 1).prefetch(first[l]);
+  }
 }
 
 // DualFloatLookup::blend of table k for the 8 lanes, lane by lane in its
@@ -111,7 +111,7 @@ VRI_AVX2 void prefetch8(const DualFloatLookup& table, const int* slice, const in
 // slices blended first (wl), then s_m, s_f, and s_b across the vector's
 // halves; the lanes' results transposed into channels at the end.
 VRI_AVX2 void dual_blend8(const DualFloatLookup& table, int k, const int* slice, const int* first,
-                          const float* const (&w)[4], __m256 v[4]) {
+                          const float (&w)[4][kPacket], __m256 v[4]) {
   const std::size_t row = table.row(), plane = table.plane();
   __m128 e[kPacket];
   for (int l = 0; l < kPacket; ++l) {
@@ -243,7 +243,6 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
       alignas(32) float weight[4][kPacket];  // wl, wf, wm, wb
       store(weight[0], _mm256_set_m128(wl[1], wl[0]));
       for (int k = 0; k < 3; ++k) store(weight[k + 1], w[k]);
-      const float* const weights[4] = {weight[0], weight[1], weight[2], weight[3]};
       // Lit, the gradients at the three samples, while the entries load.
       __m256 grad[3][3]{};
       if (shading)
@@ -251,9 +250,9 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
       __m256 e[4];
       const __m256 d[3] = {load(L.d[0]), load(L.d[1]), load(L.d[2])};
       if (!shading) {
-        dual_blend8(table, 0, slice, first, weights, e);
+        dual_blend8(table, 0, slice, first, weight, e);
       } else if (!interpolated) {  // one normal, the mean of the three gradients
-        dual_blend8(table, 0, slice, first, weights, e);
+        dual_blend8(table, 0, slice, first, weight, e);
         __m256 mean[3], a, b;
         for (int c = 0; c < 3; ++c)
           mean[c] = _mm256_mul_ps(_mm256_add_ps(_mm256_add_ps(grad[0][c], grad[1][c]), grad[2][c]),
@@ -262,9 +261,9 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
         lit_by8(a, b, e);
       } else {
         __m256 full[4], middle[4], back[4], a[3], b[3];
-        dual_blend8(table, 0, slice, first, weights, full);
-        dual_blend8(table, 1, slice, first, weights, middle);
-        dual_blend8(table, 2, slice, first, weights, back);
+        dual_blend8(table, 0, slice, first, weight, full);
+        dual_blend8(table, 1, slice, first, weight, middle);
+        dual_blend8(table, 2, slice, first, weight, back);
         for (int k = 0; k < 3; ++k) terms8(*shading, grad[k], d, a[k], b[k]);
         lagrange8(full, middle, back, a, b, e);
       }

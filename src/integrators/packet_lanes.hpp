@@ -317,9 +317,7 @@ VRI_AVX2 __m256i spot8(const __m256i (&i)[Steps + 1], __m256i n) {
 // 256 MiB, by default) lives in memory. (preint1's, 1 MiB, gained
 // nothing: engine's turned view took 1.035x as long, median of 9.)
 VRI_AVX2 void prefetch_rows8(const SecondOrderFloatLookup& table, const int* entry) {
-  const int row = static_cast<int>(table.row()), plane = static_cast<int>(table.plane());
-  for (int l = 0; l < kPacket; ++l)
-    for (int add : {0, row, plane, plane + row}) __builtin_prefetch(table.data() + entry[l] + add);
+  for (int l = 0; l < kPacket; ++l) table.prefetch(entry[l]);
 }
 
 // The slab lookups of the 8 lanes in the table `data` of the lookup's layout

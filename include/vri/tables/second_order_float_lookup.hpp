@@ -34,12 +34,18 @@ class SecondOrderFloatLookup {
     float wf, wm, wb;
   };
   Spot find(const std::array<Place, 3>& p) const {
-    const float* e = data_ + offset(p[0].i, p[1].i, p[2].i);
+    const std::size_t at = offset(p[0].i, p[1].i, p[2].i);
+    prefetch(at);
+    return {data_ + at, p[0].w, p[1].w, p[2].w};
+  }
+  // Starts loading the four rows (two entries each) that a blend at entry
+  // `at` (floats from the table's start) reads.
+  void prefetch(std::size_t at) const {
+    const float* e = data_ + at;
     __builtin_prefetch(e);
     __builtin_prefetch(e + row_);
     __builtin_prefetch(e + plane_);
     __builtin_prefetch(e + plane_ + row_);
-    return {e, p[0].w, p[1].w, p[2].w};
   }
   Float4 blend(const Spot& spot) const { return blend(spot, data_); }
   // The same spot in another table of this one's layout (the weighted
