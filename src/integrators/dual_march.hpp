@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "vri/core/ray.hpp"
 #include "vri/tables/second_order_float_lookup.hpp"
 #include "vri/tables/slab_table.hpp"
+#include "vri/tables/zero_spots.hpp"
 #include "vri/volume/cell_traversal.hpp"
 #include "vri/volume/empty_space.hpp"
 #include "vri/volume/grid_volume.hpp"
@@ -57,7 +59,8 @@ class SegmentSkip {
 // side by side as one 8-float vector until the end, which is how the
 // packets (float_packet_dual.cpp) blend each lane, with the same operations.
 // With interpolated lighting the weighted tables (middle, back) are read at
-// the same spot.
+// the same spot. A spot whose entries are all zero in both slices of every
+// table (ZeroSpots) is not read: its blend is +0, as reading would give.
 class DualFloatLookup {
  public:
   explicit DualFloatLookup(const SecondOrderLengthTable& full, const SecondOrderLengthTable* middle = nullptr,
@@ -73,6 +76,11 @@ class DualFloatLookup {
       if (slice.axis().lo() != slices_[0].axis().lo() || slice.axis().scale() != slices_[0].axis().scale() ||
           slice.size() != slices_[0].size())
         throw std::logic_error("DualFloatLookup: slices on different scalar axes");
+    std::vector<const float*> tables;
+    for (int i = 0; i < lengths(); ++i)
+      for (int k = 0; k < 3; ++k)
+        if (data(i, k)) tables.push_back(data(i, k));
+    zero_spots_.emplace(slices_[0].size(), tables);
   }
   struct Spot {
     int i;            // slices i and i + 1
@@ -86,12 +94,15 @@ class DualFloatLookup {
     const SecondOrderFloatLookup& axes = slices_[0];
     const FloatAxis::Place f = axes.place(s_f), m = axes.place(s_m), b = axes.place(s_b);
     const std::size_t at = axes.offset(f.i, m.i, b.i);
-    slices_[l.i].prefetch(at);
-    slices_[l.i + 1].prefetch(at);
+    if (!zero(at)) {
+      slices_[l.i].prefetch(at);
+      slices_[l.i + 1].prefetch(at);
+    }
     return {l.i, static_cast<float>(l.w), at, f.w, m.w, b.w};
   }
   // Table k (0 the unweighted one, 1 middle, 2 back) at the spot.
   Float4 blend(const Spot& spot, int k = 0) const {
+    if (zero(spot.at)) return Float4{0, 0, 0, 0};
     const float *lo = data(spot.i, k) + spot.at, *hi = data(spot.i + 1, k) + spot.at;
     const auto lerp = [](Float4 a, Float4 b, float w) { return a + w * (b - a); };
     Float4 r[2][2][2];  // [f][m][b]: the rows' entries, slices blended
@@ -113,6 +124,8 @@ class DualFloatLookup {
   // Slice i of table k (0 the unweighted one, 1 middle, 2 back), all in slice i's layout.
   const float* data(int i, int k) const { return k == 0 ? slices_[i].data() : weighted_[i][k - 1]; }
   double max_length() const { return max_length_; }
+  // Whether the spot at entry `at` (floats from a slice's start) reads only zeros.
+  bool zero(std::size_t at) const { return zero_spots_->zero(at / 4); }
   // Floats from entry (f, m, b) to (f, m + 1, b) and to (f + 1, m, b), in every slice.
   std::size_t row() const { return slices_[0].row(); }
   std::size_t plane() const { return slices_[0].plane(); }
@@ -121,6 +134,7 @@ class DualFloatLookup {
   std::vector<SecondOrderFloatLookup> slices_;
   std::vector<std::array<const float*, 2>> weighted_;  // per slice: middle, back (interpolated lighting)
   double max_length_;
+  std::optional<ZeroSpots> zero_spots_;  // over every slice and table
 };
 
 // The float path: per segment the cell's eight values (and, lit, their

@@ -99,8 +99,10 @@ void leap_to(DualLanes& L, int l, double x) {
 
 // The spots' rows in both slices of table 0 (DualFloatLookup::find's
 // prefetches), for the 8 lanes: asked for all at once, their loads overlap.
+// None for a spot of zeros, which the blend does not read.
 VRI_AVX2 void prefetch8(const DualFloatLookup& table, const int* slice, const int* first) {
   for (int l = 0; l < kPacket; ++l) {
+    if (table.zero(first[l])) continue;
     table.slice(slice[l]).prefetch(first[l]);
     table.slice(slice[l] + 1).prefetch(first[l]);
   }
@@ -109,12 +111,17 @@ VRI_AVX2 void prefetch8(const DualFloatLookup& table, const int* slice, const in
 // DualFloatLookup::blend of table k for the 8 lanes, lane by lane in its
 // order: each row's two entries (b, b + 1) as one 8-float vector, the
 // slices blended first (wl), then s_m, s_f, and s_b across the vector's
-// halves; the lanes' results transposed into channels at the end.
+// halves; the lanes' results transposed into channels at the end. A spot of
+// zeros gives +0, unread, as DualFloatLookup::blend.
 VRI_AVX2 void dual_blend8(const DualFloatLookup& table, int k, const int* slice, const int* first,
                           const float (&w)[4][kPacket], __m256 v[4]) {
   const std::size_t row = table.row(), plane = table.plane();
   __m128 e[kPacket];
   for (int l = 0; l < kPacket; ++l) {
+    if (table.zero(first[l])) {
+      e[l] = _mm_setzero_ps();
+      continue;
+    }
     const float *lo = table.data(slice[l], k) + first[l], *hi = table.data(slice[l] + 1, k) + first[l];
     const __m256 wl = _mm256_broadcast_ss(w[0] + l), wf = _mm256_broadcast_ss(w[1] + l),
                  wm = _mm256_broadcast_ss(w[2] + l);

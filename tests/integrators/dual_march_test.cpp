@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -86,6 +88,59 @@ TEST(DualFloatLookup, ClampsAtTheEndsOfItsAxes) {
   EXPECT_EQ(zero_length.i, 0);
   EXPECT_EQ(zero_length.wl, 0.0f);
   EXPECT_NEAR(lookup.blend(zero_length)[3], multilinear(3, 0, 0, 1.5, 2.5, 3.5), 1e-6);
+}
+
+// Spots of zeros (ZeroSpots) are not read: zero entries where f <= 3 and
+// b <= 4 in every slice of the full table, except one entry of the middle
+// table. A spot whose eight entries are zero in both slices of all three
+// tables gives +0, bit for bit what blending the zeros gives; every other
+// spot still blends its entries (the weighted tables' one entry shows).
+TEST(DualFloatLookup, SpotsOfZerosGivePlusZeroAndOnlyThey) {
+  const auto zeroed = [](int table) {
+    SecondOrderLengthTable t = filled(table);
+    std::vector<SecondOrderTable> slices;
+    for (int i = 0; i < kLengths; ++i) {
+      SecondOrderTable slice = t.slices()[i];
+      for (int f = 0; f <= 3; ++f)
+        for (int m = 0; m < kN; ++m)
+          for (int b = 0; b <= 4; ++b)
+            for (int c = 0; c < 4; ++c) slice.entry(f, m, b)[c] = table == 1 && i == 2 && f == 1 && m == 5 && b == 2 ? 0.25f : 0.0f;
+      slices.push_back(std::move(slice));
+    }
+    return SecondOrderLengthTable(std::move(slices), kMaxLength);
+  };
+  const SecondOrderLengthTable full = zeroed(0), middle = zeroed(1), back = zeroed(2);
+  const detail::DualFloatLookup lit(full, &middle, &back), unlit(full);
+  int skipped = 0, read = 0;
+  for (int f = 0; f + 1 < kN; ++f)
+    for (int m = 0; m + 1 < kN; ++m)
+      for (int b = 0; b + 1 < kN; ++b)
+        for (const double l : {0.3, 1.1}) {
+          const float s[3] = {f + 0.375f, m + 0.5f, b + 0.625f};
+          const bool zero_entries = f + 1 <= 3 && b + 1 <= 4;
+          const bool middle_one = (f == 1 || f == 0) && (m == 5 || m == 4) && (b == 2 || b == 1);
+          const auto a = unlit.find(l, s[0], s[1], s[2]);
+          EXPECT_EQ(unlit.zero(a.at), zero_entries);
+          const auto spot = lit.find(l, s[0], s[1], s[2]);
+          EXPECT_EQ(lit.zero(spot.at), zero_entries && !middle_one);
+          for (int table = 0; table < 3; ++table) {
+            const Float4 v = lit.blend(spot, table);
+            const Rgba d = (table == 0 ? full : table == 1 ? middle : back).lookup(l, s[0], s[1], s[2]);
+            for (int c = 0; c < 4; ++c) {
+              if (lit.zero(spot.at)) {
+                EXPECT_EQ(std::bit_cast<std::uint32_t>(v[c]), 0u);  // +0, not -0
+              } else {
+                EXPECT_NEAR(v[c], d[c], 2e-6);
+              }
+            }
+          }
+          if (middle_one && zero_entries && l > 1) {
+            EXPECT_GT(lit.blend(spot, 1)[0], 0);  // read, not skipped
+          }
+          (lit.zero(spot.at) ? skipped : read)++;
+        }
+  EXPECT_GT(skipped, 50);
+  EXPECT_GT(read, 50);
 }
 
 }  // namespace
