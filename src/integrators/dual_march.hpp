@@ -158,6 +158,7 @@ Rgba march_cells_float(const GridVolume& volume, const Value* values, const Dual
   for_each_cell_segment(volume, ray, iv, [&](const CellSegment& seg) {
     if (acc.T < leap.termination) return false;
     if (skip.skipped(seg)) return true;
+    if (leap.cells && leap.cells->transparent(seg.cell[0], seg.cell[1], seg.cell[2])) return true;
     const std::size_t offset = seg.cell[0] + sy * seg.cell[1] + sz * seg.cell[2];
     const std::array<float, 8> c = corners_as_float(values + offset, sy, sz);
     const auto cell_at = [&](double dt) {

@@ -201,7 +201,8 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
           }
           continue;
         }
-        sampled |= 1u << l;
+        // A transparent cell's segment adds nothing either: not sampled.
+        if (!leap.cells || !leap.cells->transparent(L.cell[0][l], L.cell[1][l], L.cell[2][l])) sampled |= 1u << l;
       }
       L.ta[l] = L.tb[l];
       if (!(L.ta[l] < L.t1[l])) ended |= 1u << l;

@@ -81,6 +81,18 @@ Preint2DualIntegrator::Preint2DualIntegrator(const GridVolume& volume, const Tra
     float_table_ = std::make_unique<detail::DualFloatLookup>(*table_);
   if (shader_) float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
   packets_ = detail::packets_fit(volume);  // (the float path: past the return above)
+  // Cells inside non-empty macro cells whose corners' range (with the
+  // rounding margin) lies where every second-order entry is zero: the
+  // samples of their segments fall there, so the segments add nothing.
+  if (const EmptySpace* space = fast_.space()) {
+    const double margin = interpolation_margin(volume);
+    const ZeroOpacityBins bins(*fast_.zero(), volume.min_value() - margin, volume.max_value() + margin);
+    transparent_.emplace(volume, *space, bins, margin);
+  }
+}
+
+detail::Leap Preint2DualIntegrator::leap() const {
+  return {fast_.space(), fast_.termination(), fast_.zero(), transparent_ ? &*transparent_ : nullptr};
 }
 
 Preint2DualIntegrator::~Preint2DualIntegrator() = default;
@@ -88,7 +100,7 @@ Preint2DualIntegrator::~Preint2DualIntegrator() = default;
 const SecondOrderLengthTable& Preint2DualIntegrator::table() const { return weighted_ ? weighted_->full : *table_; }
 
 Rgba Preint2DualIntegrator::integrate(const Ray& ray) const {
-  const detail::Leap leap{fast_.space(), fast_.termination(), fast_.zero()};
+  const detail::Leap leap = this->leap();
   if (float_table_)
     return volume_.visit([&](auto values) {
       return detail::march_cells_float(volume_, values.data(), *float_table_, float_shading_.get(),
@@ -118,7 +130,7 @@ Rgba Preint2DualIntegrator::integrate(const Ray& ray) const {
 void Preint2DualIntegrator::integrate_row(const Ray* rays, int n, Rgba* out) const {
   int i = 0;
   if (packets_) {
-    const detail::Leap leap{fast_.space(), fast_.termination(), fast_.zero()};
+    const detail::Leap leap = this->leap();
     for (; i + detail::kPacket <= n; i += detail::kPacket)
       detail::march_dual_packet(volume_, *float_table_, float_shading_.get(), weighted_.has_value(), rays + i, leap,
                                 out + i);

@@ -27,6 +27,7 @@
 #include "vri/volume/empty_space.hpp"
 #include "vri/volume/float_sampler.hpp"
 #include "vri/volume/grid_volume.hpp"
+#include "vri/volume/transparent_cells.hpp"
 
 namespace vri::detail {
 
@@ -92,6 +93,9 @@ struct Leap {
   // scalars lie in a zero-opacity range it adds exactly nothing, so its exact
   // integral is not computed (the same bytes; null: always computed).
   const ZeroOpacity* zero = nullptr;
+  // preint2-dual's float path: cells whose every segment reads zero entries
+  // (their corners' range classified for second-order entries), not sampled.
+  const TransparentCells* cells = nullptr;
 };
 
 // From slab k of `steps` steps of h (its front sample at t = t0 + k steps h,

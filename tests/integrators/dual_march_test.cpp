@@ -6,6 +6,7 @@
 // continuous indices, up to float roundings, in every table it reads.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -13,7 +14,10 @@
 #include <vector>
 
 #include "integrators/dual_march.hpp"
+#include "vri/tables/discrete_tf.hpp"
 #include "vri/tables/second_order_table.hpp"
+#include "vri/tables/zero_opacity.hpp"
+#include "vri/transfer/transfer_function.hpp"
 
 namespace vri {
 namespace {
@@ -141,6 +145,51 @@ TEST(DualFloatLookup, SpotsOfZerosGivePlusZeroAndOnlyThey) {
         }
   EXPECT_GT(skipped, 50);
   EXPECT_GT(read, 50);
+}
+
+// What the float path's transparent cells rely on (preint2_dual.cpp): a
+// cell whose corners' range, widened by the rounding margin, lies where
+// ZeroOpacityBins over a second-order ZeroOpacity sees no extinction gives
+// samples whose every lookup reads zero entries, whatever three samples of
+// that range a segment takes (the parabola through them leaves the range by
+// up to an eighth of its width). Transfer function: zero up to 100, then a
+// steep opaque ramp. The same ranges classified for first-order entries let
+// some segment read a non-zero entry: what the second-order margin is for.
+TEST(DualFloatLookup, TransparentRangesOfSecondOrderEntriesReadOnlyZeros) {
+  const TransferFunction tf({{0, 1, 1, 1, 0}, {100, 1, 1, 1, 0}, {104, 1, 0.5, 0.2, 40}, {255, 1, 1, 1, 40}});
+  const DiscreteTf d(tf, 32);
+  const SecondOrderLengthTable table =
+      build_second_order_length_table(*make_second_order_builder("fast"), d, 4, kMaxLength, 8);
+  const detail::DualFloatLookup lookup(table);
+  const double margin = 1e-5 * 510;  // interpolation_margin of a 0..255 volume
+  const ZeroOpacity second(d, TableOrder::Second), first(d, TableOrder::First);
+  const ZeroOpacityBins second_bins(second, -margin, 255 + margin), first_bins(first, -margin, 255 + margin);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int ranges = 0, first_only_nonzero = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const float lo = static_cast<float>(120 * unit(rng)), hi = std::min(255.0f, lo + static_cast<float>(60 * unit(rng)));
+    const bool zero2 = second_bins.over(lo - margin, hi + margin), zero1 = first_bins.over(lo - margin, hi + margin);
+    if (!zero1 && !zero2) continue;
+    ASSERT_TRUE(zero1) << "second-order zero implies first-order zero";
+    const float mid = 0.5f * (lo + hi);
+    bool nonzero = false;
+    for (const std::array<float, 3> s : {std::array{lo, hi, hi}, std::array{hi, hi, lo}, std::array{lo, mid, hi},
+                                         std::array{hi, lo, lo}, std::array{lo, lo, lo}, std::array{hi, hi, hi}})
+      for (const double l : {0.4, 1.0, kMaxLength}) {
+        const Float4 v = lookup.blend(lookup.find(l, s[0], s[1], s[2]));
+        for (int c = 0; c < 4; ++c) {
+          if (zero2) {
+            ASSERT_EQ(std::bit_cast<std::uint32_t>(v[c]), 0u) << lo << " .. " << hi;
+          }
+          nonzero = nonzero || v[c] != 0;
+        }
+      }
+    ranges += zero2;
+    first_only_nonzero += !zero2 && nonzero;
+  }
+  EXPECT_GT(ranges, 1000);
+  EXPECT_GT(first_only_nonzero, 0);
 }
 
 }  // namespace

@@ -20,7 +20,10 @@
 // every length: 3x the memory, 384 MiB at the default table_size 64.
 //
 // Fast path (fast_path.hpp): segments in runs of empty macro cells (classified
-// for second-order entries) are not sampled, which changes no byte, and
+// for second-order entries) are not sampled, which changes no byte; on the
+// float path neither are the segments of transparent cells inside the
+// others (TransparentCells, classified the same way), and lookups of spots
+// whose entries are all zero read nothing (ZeroSpots); and
 // `termination` stops a ray once T falls below it. `float_math` (the
 // default) samples, looks up and shades in float and composites in double,
 // unlit and lit (dual_march.hpp), on packets of 8 rays where the CPU has AVX2
@@ -38,12 +41,14 @@
 #include "vri/tables/second_order_weighted.hpp"
 #include "vri/volume/float_sampler.hpp"
 #include "vri/volume/grid_volume.hpp"
+#include "vri/volume/transparent_cells.hpp"
 
 namespace vri {
 
 namespace detail {
 class DualFloatLookup;  // integrators/dual_march.hpp
 class FloatShading;     // integrators/float_shading.hpp
+struct Leap;            // integrators/ray_steps.hpp
 }
 
 class Preint2DualIntegrator final : public Integrator {
@@ -78,6 +83,8 @@ class Preint2DualIntegrator final : public Integrator {
   std::unique_ptr<detail::DualFloatLookup> float_table_;     // the float path
   std::unique_ptr<detail::FloatShading> float_shading_;      // the float path, lit
   bool packets_ = false;                                     // integrate_row marches packets (float path)
+  std::optional<TransparentCells> transparent_;              // the float path, with skipping
+  detail::Leap leap() const;
 };
 
 }  // namespace vri
