@@ -252,7 +252,7 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
       store(weight[0], _mm256_set_m128(wl[1], wl[0]));
       for (int k = 0; k < 3; ++k) store(weight[k + 1], w[k]);
       // Lit, the gradients at the three samples, while the entries load.
-      __m256 grad[3][3]{};
+      __m256 grad[3][3];  // (read only when lit: not cleared for every segment)
       if (shading)
         for (int k = 0; k < 3; ++k) gradient8(*shading, cells[k], grad[k]);
       __m256 e[4];
