@@ -12,7 +12,9 @@
 //
 // Memory: kLengths * table_size^3 RGBA float32 entries, 128 MiB at the
 // default table_size 64; over kMaxSecondOrderEntries (1 GiB, table_size > 128)
-// build_second_order_length_table refuses before building anything.
+// build_second_order_length_table refuses before building anything. The
+// float path adds a bit per table spot (ZeroSpots, 32 KiB at 64) and, with
+// skipping, a bit per cell of the non-empty macro cells (TransparentCells).
 //
 // Lighting (SPEC §5, as preint2): `sampled`, one normal per slab, the mean of
 // the three samples' gradients; `interpolated`, the shading quadratic through
