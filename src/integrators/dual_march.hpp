@@ -25,8 +25,11 @@ namespace vri::detail {
 
 // Segments in a run of empty macro cells (classified for second-order
 // entries): their three samples are in the run, so their entries are zero,
-// and the march need not sample them. Queries the macro-cell walk only once
-// t passes the end of the last run found.
+// and the march need not sample them. One macro-cell walk a ray
+// (EmptySpace::Walk, from the first segment on), asked for its next run only
+// once t passes the end of the last one: a ray alternates between empty and
+// non-empty runs several times, and a fresh query for each (EmptySpace::run)
+// located its macro cell and the box of the non-empty ones again.
 class SegmentSkip {
  public:
   SegmentSkip(const Leap& leap, const Ray& ray, double t_max) : leap_(leap), ray_(ray), t_max_(t_max) {}
@@ -34,9 +37,13 @@ class SegmentSkip {
   bool skipped(double ta, double tb) {
     if (!leap_.space) return false;
     if (ta >= t_check_) {
-      const EmptySpace::Run run = leap_.space->run(ray_, ta, t_max_);
+      if (!walk_) walk_.emplace(*leap_.space, ray_, ta, t_max_);
+      // The run that holds ta (a leap lands on the end of the run it crossed).
+      EmptySpace::Run run{false, kInf};
+      while (walk_->next(run) && !(run.t_end > ta)) {
+      }
       t_check_ = run.t_end;
-      empty_until_ = run.empty ? run.t_end : -kInf;
+      empty_until_ = run.empty && run.t_end > ta ? run.t_end : -kInf;
     }
     return tb <= empty_until_;
   }
@@ -49,6 +56,7 @@ class SegmentSkip {
   const Leap& leap_;
   const Ray& ray_;
   double t_max_, empty_until_ = -kInf, t_check_ = -kInf;
+  std::optional<EmptySpace::Walk> walk_;
 };
 
 // The (l, s_f, s_m, s_b) table in float: the two length slices next to l and,
