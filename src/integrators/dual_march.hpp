@@ -25,25 +25,18 @@ namespace vri::detail {
 
 // Segments in a run of empty macro cells (classified for second-order
 // entries): their three samples are in the run, so their entries are zero,
-// and the march need not sample them. One macro-cell walk a ray
-// (EmptySpace::Walk, from the first segment on), asked for its next run only
-// once t passes the end of the last one: a ray alternates between empty and
-// non-empty runs several times, and a fresh query for each (EmptySpace::run)
-// located its macro cell and the box of the non-empty ones again.
+// and the march need not sample them. The runs are the ray's one walk
+// (MacroRuns), asked for the next only once t passes the end of the last.
 class SegmentSkip {
  public:
-  SegmentSkip(const Leap& leap, const Ray& ray, double t_max) : leap_(leap), ray_(ray), t_max_(t_max) {}
+  SegmentSkip(const Leap& leap, const Ray& ray, double t_max) : leap_(leap), runs_(leap.space, ray, t_max) {}
   bool skipped(const CellSegment& seg) { return skipped(seg.ta, seg.tb); }
   bool skipped(double ta, double tb) {
     if (!leap_.space) return false;
-    if (ta >= t_check_) {
-      if (!walk_) walk_.emplace(*leap_.space, ray_, ta, t_max_);
+    if (ta >= runs_.end()) {
       // The run that holds ta (a leap lands on the end of the run it crossed).
-      EmptySpace::Run run{false, kInf};
-      while (walk_->next(run) && !(run.t_end > ta)) {
-      }
-      t_check_ = run.t_end;
-      empty_until_ = run.empty && run.t_end > ta ? run.t_end : -kInf;
+      const EmptySpace::Run run = runs_.at(ta);
+      empty_until_ = run.empty ? run.t_end : -std::numeric_limits<double>::infinity();
     }
     return tb <= empty_until_;
   }
@@ -52,11 +45,9 @@ class SegmentSkip {
   double empty_until() const { return empty_until_; }
 
  private:
-  static constexpr double kInf = std::numeric_limits<double>::infinity();
   const Leap& leap_;
-  const Ray& ray_;
-  double t_max_, empty_until_ = -kInf, t_check_ = -kInf;
-  std::optional<EmptySpace::Walk> walk_;
+  MacroRuns runs_;
+  double empty_until_ = -std::numeric_limits<double>::infinity();
 };
 
 // The (l, s_f, s_m, s_b) table in float: the two length slices next to l and,

@@ -197,19 +197,19 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Va
   p[0] = sample(owned.begin * steps);
   if (owned.begin < full) fill(p, owned.begin);
   auto spot = find(p);
-  double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
+  MacroRuns runs(leap.space, ray, iv->t1);
   for (long long k = owned.begin; k < full;) {
-    if (const long long j = leap_target(leap, ray, *iv, h, steps, k, full, t_check); j > k) {
+    if (const long long j = leap_target(leap, runs, *iv, h, steps, k, full); j > k) {
       k = j;
       p[0] = sample(k * steps);
       if (k == full) break;
       fill(p, k);
       spot = find(p);
     }
-    // Slabs k .. stop - 1 start before t_check, where the next leap query is
-    // due (all of them without skipping): they need no query.
+    // Slabs k .. stop - 1 start before the end of the run found, where the
+    // next leap query is due (all of them without skipping): they need no query.
     const long long stop =
-        leap.space ? std::clamp(static_cast<long long>(std::ceil((t_check - iv->t0) / (steps * h))), k + 1, full)
+        leap.space ? std::clamp(static_cast<long long>(std::ceil((runs.end() - iv->t0) / (steps * h))), k + 1, full)
                    : full;
     for (; k < stop; ++k) {
       if (acc.T < leap.termination) return acc.result();

@@ -36,7 +36,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     L.k[l] = static_cast<int>(owned.begin);
     L.full[l] = static_cast<int>(std::min(owned.end, all));
     L.partial[l] = owned.begin <= all && all < owned.end;
-    L.t_check[l] = -std::numeric_limits<double>::infinity();
+    L.runs[l].start(leap.space, rays[l], L.iv[l].t1);
   }
   const auto finish = [&](int l) {
     const FloatSample front{L.s[0][l], {L.grad[0][0][l], L.grad[0][1][l], L.grad[0][2][l]}, {L.ta[0][l], L.tb[0][l]}};
@@ -58,9 +58,9 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
       finish(l);
       return false;
     }
-    const long long j = leap_target(leap, rays[l], L.iv[l], h, steps, k, full, L.t_check[l]);
+    const long long j = leap_target(leap, L.runs[l], L.iv[l], h, steps, k, full);
     L.k[l] = static_cast<int>(j);
-    if (j == full && j > k && L.t_check[l] >= L.iv[l].t1) {
+    if (j == full && j > k && L.runs[l].end() >= L.iv[l].t1) {
       out[l] = L.pixel(l);
       active &= ~(1u << l);
       return false;
@@ -68,7 +68,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
     if (j < full)
       L.stop[l] = static_cast<int>(
           leap.space
-              ? std::clamp(static_cast<long long>(std::ceil((L.t_check[l] - L.iv[l].t0) / (steps * h))), j + 1, full)
+              ? std::clamp(static_cast<long long>(std::ceil((L.runs[l].end() - L.iv[l].t0) / (steps * h))), j + 1, full)
               : full);
     return j > k;
   };

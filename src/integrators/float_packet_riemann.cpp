@@ -63,6 +63,7 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
     const PieceRange owned = owned_pieces(L.iv[l], h, riemann_samples(L.iv[l], h));  // a brick's, else all
     L.k[l] = static_cast<int>(owned.begin);
     L.n[l] = owned.end;
+    L.runs[l].start(leap.space, rays[l], L.iv[l].t1);
   }
   const auto finish = [&](int l) {
     out[l] = L.pixel(l);
@@ -76,7 +77,7 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
     for (unsigned m = active & ~before_stop; m; m &= m - 1) {
       const int l = __builtin_ctz(m);
       long long k = L.k[l];
-      L.stop[l] = static_cast<int>(riemann_head(leap, rays[l], L.iv[l], h, L.n[l], k));
+      L.stop[l] = static_cast<int>(leap.space ? riemann_head(L.runs[l], L.iv[l], h, L.n[l], k) : L.n[l]);
       L.k[l] = static_cast<int>(std::min(k, L.n[l]));
       if (k >= L.n[l]) finish(l);
     }

@@ -60,14 +60,17 @@ inline long long last_sample_before(double t_end, const Interval& iv, double h, 
 }
 
 // The head of a stretch of riemann's float march at sample k: a leap over the
-// empty macro cells from t_k (k moves past them) until a sample in a
-// non-empty run; returns the sample where the next query is due (k + 1 at
-// least), or n once no query is needed. The packets run the same per lane.
-inline long long riemann_head(const Leap& leap, const Ray& ray, const Interval& iv, double h, long long n,
-                              long long& k, double u = 0) {
-  if (!leap.space) return n;
+// empty macro cells (`runs`, the ray's) from sample k's place (k moves past
+// them) until a sample in a non-empty run; returns the sample where the next
+// query is due (k + 1 at least), or n once no query is needed. The runs are
+// asked where the samples lie, u h into their steps (the partial last step's
+// u h_k), not at the steps' fronts: an empty run that ends between a front
+// and its sample does not hold the sample. The packets run the same per lane.
+inline long long riemann_head(MacroRuns& runs, const Interval& iv, double h, long long n, long long& k,
+                              double u = 0) {
   while (k < n) {
-    const EmptySpace::Run run = leap.space->run(ray, iv.t0 + k * h, iv.t1);
+    const double t_k = iv.t0 + k * h;
+    const EmptySpace::Run run = runs.at(t_k + u * std::min(h, iv.t1 - t_k));
     if (!run.empty)
       return std::clamp(static_cast<long long>(std::ceil((run.t_end - iv.t0) / h - u)), k + 1, n);
     k = std::max(k, last_sample_before(run.t_end, iv, h, u)) + 1;  // samples up to t_end add nothing
@@ -94,8 +97,9 @@ Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, 
   const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
   const FloatShading::Vector d = direction(ray);
   FrontToBack acc;
+  MacroRuns runs(leap.space, ray, iv->t1);
   for (long long k = owned.begin; k < n;) {
-    const long long stop = riemann_head(leap, ray, *iv, h, n, k, u);
+    const long long stop = leap.space ? riemann_head(runs, *iv, h, n, k, u) : n;
     for (; k < stop; ++k) {
       const double h_k = std::min(h, iv->t1 - (iv->t0 + k * h));
       if (acc.T < leap.termination || !(h_k > 0)) return acc.result();

@@ -39,6 +39,7 @@ struct RayLanes : Composited8 {
   alignas(32) double dx[kPacket], dy[kPacket], dz[kPacket];  // du
   alignas(32) float d[3][kPacket];  // the direction, for lighting
   Interval iv[kPacket];
+  MacroRuns runs[kPacket];  // the leaps over empty macro cells
 };
 
 // Clips the rays to the volume and starts the lanes that hit it (steps of h
@@ -77,7 +78,6 @@ struct Lanes : RayLanes {
   alignas(32) float grad[Steps + 1][3][kPacket];  // `sampled`: the samples' gradients
   alignas(32) float ta[Steps + 1][kPacket], tb[Steps + 1][kPacket];  // `interpolated`: their shading terms
   alignas(32) int entry[kPacket];  // the slab's spot (find): its first entry's offset
-  double t_check[kPacket];
 };
 
 #define VRI_AVX2 __attribute__((target("avx2"), always_inline)) inline

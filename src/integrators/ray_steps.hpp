@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "vri/core/error.hpp"
@@ -98,18 +99,52 @@ struct Leap {
   const TransparentCells* cells = nullptr;
 };
 
+// One ray's runs of empty and of non-empty macro cells, asked for front to
+// back by the marches' leaps: one macro-cell walk a ray (EmptySpace::Walk,
+// begun at the first query), not a fresh EmptySpace::run at each run
+// boundary, which located its macro cell and the box of the non-empty ones
+// again (a ray alternates between the two kinds a few times).
+class MacroRuns {
+ public:
+  MacroRuns() = default;  // no skipping
+  MacroRuns(const EmptySpace* space, const Ray& ray, double t_max) { start(space, ray, t_max); }
+  // (Again) from the front of `ray`, which must outlive the queries (the walk holds it).
+  void start(const EmptySpace* space, const Ray& ray, double t_max) {
+    space_ = space, ray_ = &ray, t_max_ = t_max;
+    last_ = {false, -std::numeric_limits<double>::infinity()};
+    walk_.reset();
+  }
+  // The run that holds t. Queries go front to back: t lies in the run last
+  // returned or after it.
+  EmptySpace::Run at(double t) {
+    if (t < last_.t_end) return last_;
+    if (!walk_) walk_.emplace(*space_, *ray_, t, t_max_);
+    EmptySpace::Run run;
+    while (walk_->next(run))
+      if (run.t_end > t) return last_ = run;
+    return last_ = {false, t_max_};  // (past the walk, by rounding) marched
+  }
+  // The end of the run last returned (-inf before the first query): no query is due before it.
+  double end() const { return last_.t_end; }
+
+ private:
+  const EmptySpace* space_ = nullptr;
+  const Ray* ray_ = nullptr;
+  double t_max_ = 0;
+  EmptySpace::Run last_{false, -std::numeric_limits<double>::infinity()};
+  std::optional<EmptySpace::Walk> walk_;
+};
+
 // From slab k of `steps` steps of h (its front sample at t = t0 + k steps h,
 // k < full): the slab the march may leap to, j > k when the ray stands in a
 // run of empty macro cells (samples k steps .. i lie in the run, and slabs
 // k .. j - 1, whose samples are among them, read zero entries), else k.
-// Queries only once t passes t_check, the end of the last run found, which it
-// then updates.
-inline long long leap_target(const Leap& leap, const Ray& ray, const Interval& iv, double h, int steps, long long k,
-                             long long full, double& t_check) {
+// Queries `runs` (the ray's) only once t passes the end of the last run found.
+inline long long leap_target(const Leap& leap, MacroRuns& runs, const Interval& iv, double h, int steps, long long k,
+                             long long full) {
   const double t = iv.t0 + k * steps * h;
-  if (!leap.space || t < t_check) return k;
-  const EmptySpace::Run run = leap.space->run(ray, t, iv.t1);
-  t_check = run.t_end;
+  if (!leap.space || t < runs.end()) return k;
+  const EmptySpace::Run run = runs.at(t);
   const long long i = static_cast<long long>(std::floor((run.t_end - iv.t0) / h));
   return run.empty ? std::min(full, i / steps) : k;
 }
@@ -142,10 +177,10 @@ Rgba march_typed(const GridVolume& volume, const Ray& ray, double h, const Polic
   Slab s{}, next{};
   s[0] = sample_at(iv->t0 + owned.begin * steps * h);
   if (owned.begin < full) fill(s, owned.begin);
-  double t_check = -std::numeric_limits<double>::infinity();  // no leap query before this t
+  MacroRuns runs(leap.space, ray, iv->t1);
   for (long long k = owned.begin; k < full; ++k) {
     if (acc.T < leap.termination) return acc.result();
-    if (const long long j = leap_target(leap, ray, *iv, h, steps, k, full, t_check); j > k) {
+    if (const long long j = leap_target(leap, runs, *iv, h, steps, k, full); j > k) {
       k = j;
       s[0] = sample_at(iv->t0 + k * steps * h);
       if (k == full) break;

@@ -48,14 +48,15 @@ Rgba RiemannIntegrator::march(const Ray& ray, const Value* values) const {
   const PieceRange owned = owned_pieces(*iv, h_, detail::riemann_samples(*iv, h_));
   double T = 1, C[3] = {0, 0, 0};
   const EmptySpace* space = fast_.space();
-  double t_check = -std::numeric_limits<double>::infinity();  // in a non-empty macro cell until then
+  detail::MacroRuns runs(space, ray, iv->t1);
   for (long long k = owned.begin; k < owned.end && !(T < fast_.termination()); ++k) {
     const double t_k = iv->t0 + k * h_;  // the step [t_k, t_k + hk]
     const double hk = std::min(h_, iv->t1 - t_k);
     if (!(hk > 0)) break;
-    if (space && t_k >= t_check) {
-      const EmptySpace::Run run = space->run(ray, t_k, iv->t1);
-      t_check = run.t_end;
+    // The runs are asked where the sample lies (not at t_k: an empty run
+    // that ends between t_k and the sample does not hold it).
+    if (const double t_s = t_k + u * hk; space && t_s >= runs.end()) {
+      const EmptySpace::Run run = runs.at(t_s);
       if (run.empty) {  // samples k .. up to run.t_end add nothing
         k = std::max(k, detail::last_sample_before(run.t_end, *iv, h_, u));
         continue;

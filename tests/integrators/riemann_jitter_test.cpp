@@ -67,6 +67,30 @@ TEST(RiemannJitter, SamplesSitUOfTheWayIntoTheirStep) {
   }
 }
 
+// Skipping empty macro cells changes no bit of a jittered march: the leaps
+// ask for the run that holds each sample, not the one that holds its step's
+// front. Zero (transparent) up to x = 8, 100 beyond, so the macro cell
+// [0, 8] is empty and [8, 16] is not; steps of 3 from x = 0: the step
+// [6, 9] has its sample at 6 + 3u, past the empty run's end at 8 when
+// u > 2/3 (s > 10 there once u > 0.7). A march that asked at the step's
+// front leapt over that sample (up to 1.3e-3 on 6 pixels of the engine at
+// 512 x 512, step 0.5, seed 7, before).
+TEST(RiemannJitter, SkippingChangesNoBit) {
+  const auto vol = test::volume_from({20, 3, 3}, [](double x, double, double) { return x <= 8 ? 0.0 : 100.0; });
+  const TransferFunction tf({{0, 1, 1, 1, 0}, {10, 1, 1, 1, 0}, {100, 1, 0.5, 0.2, 2}});
+  const Ray ray{{-1, 1.2, 1.3}, {1, 0, 0}};
+  int late = 0;  // seeds whose sample of [6, 9] lies past x = 8.1
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    late += detail::jitter_fraction(ray, seed) > 0.7 ? 1 : 0;
+    for (const bool float_math : {false, true}) {
+      const RiemannIntegrator plain(vol, tf, 3.0, {}, {.skip_empty = false, .float_math = float_math}, seed);
+      const RiemannIntegrator skip(vol, tf, 3.0, {}, {.skip_empty = true, .float_math = float_math}, seed);
+      EXPECT_EQ(plain.integrate(ray), skip.integrate(ray)) << seed << (float_math ? " float" : " double");
+    }
+  }
+  EXPECT_GT(late, 3);
+}
+
 // Over u the sum of the optical depth is exact in expectation (the mean of
 // f(t_k + u h) over u is f's mean over the step): on tau = x / 8 over
 // x in [0, 8] (depth 4) the plain left sum at step 2 gives 3, the mean over

@@ -215,13 +215,14 @@ TEST(EmptySpace, RunsEndAtTheFacesOfNonEmptyCells) {
   const EmptySpace space(cells, ZeroOpacity(tf));
   EXPECT_EQ(space.empty_count(), cells.count() - 1);
   const Ray ray{{-1, 20, 20}, {1, 0, 0}};
-  const EmptySpace::Run a = space.run(ray, 1, 33);
+  EmptySpace::Walk walk(space, ray, 1, 33);
+  EmptySpace::Run a, b, c, after;
+  ASSERT_TRUE(walk.next(a) && walk.next(b) && walk.next(c));
+  EXPECT_FALSE(walk.next(after));
   EXPECT_TRUE(a.empty);
   EXPECT_DOUBLE_EQ(a.t_end, 17);
-  const EmptySpace::Run b = space.run(ray, 18, 33);
   EXPECT_FALSE(b.empty);
   EXPECT_DOUBLE_EQ(b.t_end, 25);
-  const EmptySpace::Run c = space.run(ray, 26, 33);
   EXPECT_TRUE(c.empty);
   EXPECT_DOUBLE_EQ(c.t_end, 33);
 
@@ -230,9 +231,12 @@ TEST(EmptySpace, RunsEndAtTheFacesOfNonEmptyCells) {
   });
   const MacroCells cells2(two);
   const EmptySpace space2(cells2, ZeroOpacity(tf));
-  const EmptySpace::Run d = space2.run(ray, 18, 40);
+  EmptySpace::Walk from_inside(space2, ray, 18, 40);
+  EmptySpace::Run d;
+  ASSERT_TRUE(from_inside.next(d));
   EXPECT_FALSE(d.empty);
   EXPECT_DOUBLE_EQ(d.t_end, 40);  // leaves the macro grid at x = 32 (t = 33) still non-empty: t_max
+  EXPECT_FALSE(from_inside.next(d));
 }
 
 // for_each_occupied_run hands out the non-empty runs in order, and they and
@@ -317,9 +321,9 @@ TEST(EmptySpace, OccupiedRunsCoverExactlyTheNonEmptyCells) {
   EXPECT_GT(parts_seen, 200);
 }
 
-// run() as the marches call it, from where the last run ended: every point
-// of an empty run lies in an empty macro cell (the one the sampler reads
-// there), on a volume whose non-empty cells fill a box inside air, so that
+// A walk's runs, as the marches ask for them (MacroRuns): every point of an
+// empty run lies in an empty macro cell (the one the sampler reads there),
+// and the runs end at the ray's exit, on a volume whose non-empty cells fill a box inside air, so that
 // most of each ray lies before or after that box, and on rays along faces
 // and grid lines.
 TEST(EmptySpace, EmptyRunsHoldOnlyEmptyCells) {
@@ -347,9 +351,12 @@ TEST(EmptySpace, EmptyRunsHoldOnlyEmptyCells) {
     const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
     if (!iv) continue;
     double t = iv->t0;
-    for (int guard = 0; t < iv->t1 && guard < 1000; ++guard) {
-      const EmptySpace::Run run = space.run(ray, t, iv->t1);
+    EmptySpace::Walk walk(space, ray, t, iv->t1);
+    EmptySpace::Run run;
+    for (int guard = 0; walk.next(run); ++guard) {
+      ASSERT_LT(guard, 1000);
       ASSERT_LE(run.t_end, iv->t1);
+      ASSERT_GE(run.t_end, t);
       if (run.empty) {
         for (int k = 0; k <= 50; ++k) {
           const double x = t + (run.t_end - t) * (k + 0.5) / 51;
@@ -361,8 +368,9 @@ TEST(EmptySpace, EmptyRunsHoldOnlyEmptyCells) {
       } else {
         ++nonempty_runs;
       }
-      t = run.t_end > t ? run.t_end : t + 0.25;  // as a march steps on past a run of no length
+      t = run.t_end;
     }
+    EXPECT_EQ(t, iv->t1);
   }
   EXPECT_GT(nonempty_runs, 50);
   EXPECT_GT(empty_points, 10000);

@@ -46,19 +46,18 @@ class EmptySpace {
   bool empty(std::size_t index) const { return empty_[index] != 0; }
   std::size_t empty_count() const;
 
-  // Where the ray stands at parameter t (t <= t_max): in a run of empty
-  // (or of non-empty) macro cells that ends at t_end, where the ray enters a
-  // cell of the other kind, or t_max.
+  // A run of empty (or of non-empty) macro cells along a ray, which ends at
+  // t_end, where the ray enters a cell of the other kind, or at t_max.
   struct Run {
     bool empty;
     double t_end;
   };
-  Run run(const Ray& ray, double t, double t_max) const;
 
   // One walk of the macro cells along a ray from the cell at t (the one
   // GridVolume::sample reads there), run after run: each run starts exactly
   // where the last one ended, so a walk never stalls on a face that
-  // rounding puts on the wrong side (run() locates its cell afresh).
+  // rounding puts on the wrong side, and finds the ray's first cell and the
+  // box once.
   class Walk {
    public:
     Walk(const EmptySpace& space, const Ray& ray, double t, double t_max);
@@ -66,13 +65,15 @@ class EmptySpace {
     bool next(Run& run);
 
    private:
-    double exit(int a) const;  // where the ray leaves the current cell through its face on axis a
+    double exit(int a, int cell) const;  // where the ray leaves macro cell `cell` of axis a through its far face
     const EmptySpace& space_;
     const Ray& ray_;
     double t_max_, limit_ = 0;  // the walk's end: t_max or, before it, where the ray leaves the box
     double box_entry_ = -std::numeric_limits<double>::infinity();  // an empty run before the box, to here
     std::array<int, 3> cell_{};
+    std::size_t index_ = 0;  // cell_'s (MacroCells::index)
     int step_[3];
+    double inverse_[3];  // 1 / the ray's direction (0 where it is 0): a product per face, not a division
     double leave_[3] = {};
     bool tail_ = false;  // what is left is one empty run to t_max
     bool done_ = false;
@@ -80,13 +81,10 @@ class EmptySpace {
 
  private:
   // Where the ray lies in the box of the non-empty macro cells: [b0, b1],
-  // with the faces' planes crossed at face(axis, plane) (the caller's own
+  // with the faces' planes crossed at face(axis, plane) (the walk's
   // formula); false when it misses the box or there is none.
   template <class Face>
   bool occupied_span(const Ray& ray, Face&& face, double& b0, double& b1) const;
-
-  // run() over the whole grid: the macro-cell walk from t, until the kind of cell changes or t_max.
-  Run walk(const Ray& ray, double t, double t_max) const;
 
   const MacroCells& cells_;
   std::vector<std::uint8_t> empty_;
