@@ -118,8 +118,9 @@ bool EmptySpace::Walk::next(Run& run) {
       return true;
     }
   }
-  // The walk's state in locals while it crosses cells (kept in registers, as
-  // EmptySpace::walk keeps its own), written back where the run ends.
+  // The walk's state in locals while it crosses cells (kept in registers:
+  // a member array indexed by the axis was kept in memory), written back
+  // where the run ends.
   const auto& m = space_.cells_.dims();
   std::array<int, 3> cell = cell_;
   std::size_t index = index_;
