@@ -29,10 +29,10 @@ namespace vri::detail {
 // (MacroRuns), asked for the next only once t passes the end of the last.
 class SegmentSkip {
  public:
-  SegmentSkip(const Leap& leap, const Ray& ray, double t_max) : leap_(leap), runs_(leap.space, ray, t_max) {}
+  SegmentSkip(const Leap& leap, const Ray& ray, double t_max) : runs_(leap.space, ray, t_max) {}
   bool skipped(const CellSegment& seg) { return skipped(seg.ta, seg.tb); }
   bool skipped(double ta, double tb) {
-    if (!leap_.space) return false;
+    if (!runs_.skipping()) return false;
     if (ta >= runs_.end()) {
       // The run that holds ta (a leap lands on the end of the run it crossed).
       const EmptySpace::Run run = runs_.at(ta);
@@ -45,7 +45,6 @@ class SegmentSkip {
   double empty_until() const { return empty_until_; }
 
  private:
-  const Leap& leap_;
   MacroRuns runs_;
   double empty_until_ = -std::numeric_limits<double>::infinity();
 };

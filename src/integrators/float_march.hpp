@@ -199,7 +199,7 @@ Rgba march_float(const GridVolume& volume, const FloatSampler& sampler, const Va
   auto spot = find(p);
   MacroRuns runs(leap.space, ray, iv->t1);
   for (long long k = owned.begin; k < full;) {
-    if (const long long j = leap_target(leap, runs, *iv, h, steps, k, full); j > k) {
+    if (const long long j = leap_target(runs, *iv, h, steps, k, full); j > k) {
       k = j;
       p[0] = sample(k * steps);
       if (k == full) break;

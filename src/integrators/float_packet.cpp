@@ -58,7 +58,7 @@ __attribute__((target("avx2"))) void march_packet(const GridVolume& volume, cons
       finish(l);
       return false;
     }
-    const long long j = leap_target(leap, L.runs[l], L.iv[l], h, steps, k, full);
+    const long long j = leap_target(L.runs[l], L.iv[l], h, steps, k, full);
     L.k[l] = static_cast<int>(j);
     if (j == full && j > k && L.runs[l].end() >= L.iv[l].t1) {
       out[l] = L.pixel(l);

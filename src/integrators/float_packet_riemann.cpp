@@ -77,7 +77,7 @@ __attribute__((target("avx2"))) void march_riemann_lanes(const GridVolume& volum
     for (unsigned m = active & ~before_stop; m; m &= m - 1) {
       const int l = __builtin_ctz(m);
       long long k = L.k[l];
-      L.stop[l] = static_cast<int>(leap.space ? riemann_head(L.runs[l], L.iv[l], h, L.n[l], k) : L.n[l]);
+      L.stop[l] = static_cast<int>(riemann_head(L.runs[l], L.iv[l], h, L.n[l], k));
       L.k[l] = static_cast<int>(std::min(k, L.n[l]));
       if (k >= L.n[l]) finish(l);
     }

@@ -62,12 +62,14 @@ inline long long last_sample_before(double t_end, const Interval& iv, double h, 
 // The head of a stretch of riemann's float march at sample k: a leap over the
 // empty macro cells (`runs`, the ray's) from sample k's place (k moves past
 // them) until a sample in a non-empty run; returns the sample where the next
-// query is due (k + 1 at least), or n once no query is needed. The runs are
+// query is due (k + 1 at least), or n once no query is needed (at once
+// without skipping). The runs are
 // asked where the samples lie, u h into their steps (the partial last step's
 // u h_k), not at the steps' fronts: an empty run that ends between a front
 // and its sample does not hold the sample. The packets run the same per lane.
 inline long long riemann_head(MacroRuns& runs, const Interval& iv, double h, long long n, long long& k,
                               double u = 0) {
+  if (!runs.skipping()) return n;
   while (k < n) {
     const double t_k = iv.t0 + k * h;
     const EmptySpace::Run run = runs.at(t_k + u * std::min(h, iv.t1 - t_k));
@@ -99,7 +101,7 @@ Rgba march_riemann_float(const GridVolume& volume, const FloatSampler& sampler, 
   FrontToBack acc;
   MacroRuns runs(leap.space, ray, iv->t1);
   for (long long k = owned.begin; k < n;) {
-    const long long stop = leap.space ? riemann_head(runs, *iv, h, n, k, u) : n;
+    const long long stop = riemann_head(runs, *iv, h, n, k, u);
     for (; k < stop; ++k) {
       const double h_k = std::min(h, iv->t1 - (iv->t0 + k * h));
       if (acc.T < leap.termination || !(h_k > 0)) return acc.result();

@@ -126,6 +126,7 @@ class MacroRuns {
   }
   // The end of the run last returned (-inf before the first query): no query is due before it.
   double end() const { return last_.t_end; }
+  bool skipping() const { return space_ != nullptr; }  // false: no runs to ask (skipping is off)
 
  private:
   const EmptySpace* space_ = nullptr;
@@ -140,10 +141,9 @@ class MacroRuns {
 // run of empty macro cells (samples k steps .. i lie in the run, and slabs
 // k .. j - 1, whose samples are among them, read zero entries), else k.
 // Queries `runs` (the ray's) only once t passes the end of the last run found.
-inline long long leap_target(const Leap& leap, MacroRuns& runs, const Interval& iv, double h, int steps, long long k,
-                             long long full) {
+inline long long leap_target(MacroRuns& runs, const Interval& iv, double h, int steps, long long k, long long full) {
   const double t = iv.t0 + k * steps * h;
-  if (!leap.space || t < runs.end()) return k;
+  if (!runs.skipping() || t < runs.end()) return k;
   const EmptySpace::Run run = runs.at(t);
   const long long i = static_cast<long long>(std::floor((run.t_end - iv.t0) / h));
   return run.empty ? std::min(full, i / steps) : k;
@@ -180,7 +180,7 @@ Rgba march_typed(const GridVolume& volume, const Ray& ray, double h, const Polic
   MacroRuns runs(leap.space, ray, iv->t1);
   for (long long k = owned.begin; k < full; ++k) {
     if (acc.T < leap.termination) return acc.result();
-    if (const long long j = leap_target(leap, runs, *iv, h, steps, k, full); j > k) {
+    if (const long long j = leap_target(runs, *iv, h, steps, k, full); j > k) {
       k = j;
       s[0] = sample_at(iv->t0 + k * steps * h);
       if (k == full) break;

@@ -323,9 +323,9 @@ TEST(EmptySpace, OccupiedRunsCoverExactlyTheNonEmptyCells) {
 
 // A walk's runs, as the marches ask for them (MacroRuns): every point of an
 // empty run lies in an empty macro cell (the one the sampler reads there),
-// and the runs end at the ray's exit, on a volume whose non-empty cells fill a box inside air, so that
-// most of each ray lies before or after that box, and on rays along faces
-// and grid lines.
+// and the runs end at the ray's exit, on a volume whose non-empty cells
+// fill a box inside air, so that most of each ray lies before or after that
+// box, and on rays along faces and grid lines.
 TEST(EmptySpace, EmptyRunsHoldOnlyEmptyCells) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0, 1);
