@@ -19,7 +19,11 @@
 // The table kernels compiled twice, AVX2 + FMA and the x86-64 baseline, one
 // picked at load time (ifunc). Only x86 knows these arch names.
 #define VRI_TARGET_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+// Compiled twice, AVX2 without FMA and the baseline: code that must give the
+// same bytes in both (core/f64x4.hpp's vectors; neither fuses a * b + c).
+#define VRI_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define VRI_HAVE_AVX2_PACKETS 0
 #define VRI_TARGET_CLONES
+#define VRI_AVX2_CLONES
 #endif

@@ -5,7 +5,6 @@
 // lighting is on) by both Simpson estimates, and the optical depth inside the
 // step from the quartic through the tau samples. Shared by the paper's
 // strategies and the guaranteed one.
-#include <algorithm>
 #include <cmath>
 
 #include "simpson5.hpp"
@@ -25,30 +24,11 @@ struct ColourStep {
   double err;               // the largest error(D, S) over the channels
 };
 
-// T: transmittance at t.
-inline ColourStep colour_step(const TfSample (&f)[5], double T, double h) {
-  ColourStep st;
-  for (int k = 0; k < 5; ++k) st.tau[k] = f[k].tau;
-  cumulative(st.tau, h, st.depth);
-  double g[4][5];
-  for (int k = 0; k < 5; ++k) {
-    // depth[0] is 0 (e^0 = 1 exactly); e^{-depth[4]} is kept for add_step.
-    const double e = k == 0 ? 1.0 : std::exp(-st.depth[k]);
-    if (k == 4) st.attenuation = e;
-    const double w = f[k].tau * T * e;
-    g[0][k] = f[k].r * w;
-    g[1][k] = f[k].g * w;
-    g[2][k] = f[k].b * w;
-    g[3][k] = w;
-  }
-  st.err = 0;
-  for (int c = 0; c < 4; ++c) {
-    st.S[c] = whole(g[c], h);
-    st.D[c] = halves(g[c], h);
-    st.err = std::max(st.err, error(st.D[c], st.S[c]));
-  }
-  return st;
-}
+// T: transmittance at t. Four lanes at a time (core/f64x4.hpp): the depths
+// and their exponentials over the samples 1..4, then the Simpson sums over
+// the channels r, g, b, alpha; the same bytes on every target
+// (simpson_colour_step.cpp).
+ColourStep colour_step(const TfSample (&f)[5], double T, double h);
 
 // Adds an accepted step to the premultiplied colour C and returns the
 // transmittance after it. Opacity is 1 - T with T = exp(-optical depth) (SPEC

@@ -1,0 +1,65 @@
+#include "integrators/simpson_colour_step.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace vri {
+namespace {
+
+using simpson5::colour_step;
+
+// The optical depths are the integrals of the quartic through the five tau
+// samples: exact for a quartic tau(t), to rounding.
+TEST(SimpsonColourStep, DepthsIntegrateAQuarticExactly) {
+  const double a[5] = {0.3, -0.7, 1.1, 0.4, -0.2}, t0 = 0.25, h = 0.8;
+  const auto tau = [&](double t) { return (((a[4] * t + a[3]) * t + a[2]) * t + a[1]) * t + a[0]; };
+  const auto integral = [&](double t) {
+    return ((((a[4] / 5 * t + a[3] / 4) * t + a[2] / 3) * t + a[1] / 2) * t + a[0]) * t;
+  };
+  TfSample f[5];
+  for (int k = 0; k < 5; ++k) f[k] = {0.5, 0.5, 0.5, tau(t0 + h * k / 4)};
+  const auto st = colour_step(f, 1.0, h);
+  EXPECT_EQ(st.depth[0], 0.0);
+  for (int k = 1; k < 5; ++k) EXPECT_NEAR(st.depth[k], integral(t0 + h * k / 4) - integral(t0), 1e-15) << k;
+  EXPECT_NEAR(st.attenuation, std::exp(-st.depth[4]), 1e-16);
+}
+
+// Against the loop the method is written as (Algorithm 3's I_O, simpson5.hpp),
+// with the C library's exp: the same sums to a few ulp, for random samples,
+// transmittances and steps.
+TEST(SimpsonColourStep, MatchesTheScalarSums) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1), opt(0, 40);
+  for (int trial = 0; trial < 2000; ++trial) {
+    TfSample f[5];
+    for (auto& s : f) s = {unit(rng), unit(rng), unit(rng), trial % 3 ? opt(rng) : unit(rng) * 1e-3};
+    const double T = unit(rng), h = 0.01 + unit(rng);
+    const auto st = colour_step(f, T, h);
+    const double W[4][5] = {{251, 646, -264, 106, -19}, {29, 124, 24, 4, -1}, {27, 102, 72, 42, -3},
+                            {14, 64, 24, 64, 14}};
+    const double den[4] = {720, 90, 80, 45};
+    double g[4][5], err = 0;
+    for (int k = 0; k < 5; ++k) {
+      double depth = 0;
+      if (k > 0) {
+        for (int j = 0; j < 5; ++j) depth += W[k - 1][j] * f[j].tau;
+        depth *= h / 4 / den[k - 1];
+        ASSERT_NEAR(st.depth[k], depth, 1e-13 * (1 + std::abs(depth)));
+      }
+      const double w = f[k].tau * T * std::exp(-depth);
+      g[0][k] = f[k].r * w, g[1][k] = f[k].g * w, g[2][k] = f[k].b * w, g[3][k] = w;
+    }
+    for (int c = 0; c < 4; ++c) {
+      const double S = simpson5::whole(g[c], h), D = simpson5::halves(g[c], h);
+      ASSERT_NEAR(st.S[c], S, 1e-13 * std::abs(S) + 1e-300) << trial << " " << c;
+      ASSERT_NEAR(st.D[c], D, 1e-13 * std::abs(D) + 1e-300) << trial << " " << c;
+      err = std::max(err, simpson5::error(D, S));
+    }
+    ASSERT_NEAR(st.err, err, 1e-12 * err + 1e-15 * std::abs(st.D[3]));
+  }
+}
+
+}  // namespace
+}  // namespace vri
