@@ -6,6 +6,7 @@
 
 #include "cubic.hpp"
 #include "early_stop.hpp"
+#include "guaranteed_tries.hpp"
 #include "simpson_colour_step.hpp"
 #include "tf_pieces.hpp"
 #include "vri/volume/cell_traversal.hpp"
@@ -68,7 +69,7 @@ GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& vol
   // Marschner-Lobb (docs/ADAPTIVE.md, Lighting).
   if (shader_) hmax_ = std::min(hmax_, 0.25 * volume.voxel_unit());
   hfloor_ = 1e-4 * volume.voxel_unit();
-  splitter_ = std::make_unique<TfPieceSplitter>(tf);
+  splitter_ = std::make_unique<TfPieceSplitter>(tf, /*monotone=*/false);
   if (const EmptySpace* space = skipping_.space()) transparent_.emplace(volume, *space, zero_bins_, margin_);
 }
 
@@ -94,17 +95,15 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
   const std::size_t sy = volume_.dims()[0], sz = sy * volume_.dims()[1];
   // Lit: the gradient along the current cell, three cubics in t from the cell entry.
   Cubic grad[3];
-  // One smooth piece [x, y] (t from the cell entry) on transfer-function segment `seg`.
-  auto integrate_piece = [&](const Cubic& s, const TfSegment& seg, double ta, double x, double y) {
+  // One smooth piece [x, y] (t from the cell entry) on transfer-function
+  // segment `seg`, its steps at most hcap.
+  auto integrate_piece = [&](const Cubic& s, const TfSegment& seg, double ta, double x, double y, double hcap) {
     // The samples of the current try and where they were taken: a half step
     // reuses 0, 1/4 and 1/2 of the failed one, the next step starts at the
     // last one's end (positions compare equal as halving is exact).
     TfSample f[5];
     double at[5] = {};
     bool known[5] = {false, false, false, false, false};
-    // Not below the floor, where every step is accepted anyway: that keeps
-    // each step long enough to advance u whatever the cap (1 / huge tau).
-    const double hcap = std::max(hfloor_, std::min(hmax_, step_cap(s, seg, x, y)));
     simpson5::StepControl ctl{std::min(y - x, hcap)};
     // The early stop inside a piece too: a very opaque piece would otherwise
     // take y / hcap steps whatever T.
@@ -122,10 +121,10 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
         at[k] = p;
         known[k] = true;
       }
-      const auto st = simpson5::colour_step(f, T, h);
+      const auto st = simpson5::colour_step(f, h);
       const double depth_err =
           T * simpson5::error(simpson5::halves(st.tau, h), simpson5::whole(st.tau, h));
-      const bool ok = (st.err <= colour_density * h && depth_err <= depth_density * h) || h <= hfloor_;
+      const bool ok = (T * st.err <= colour_density * h && depth_err <= depth_density * h) || h <= hfloor_;
       if (!ok) {
         f[4] = f[2], at[4] = at[2];
         f[2] = f[1], at[2] = at[1];
@@ -133,7 +132,7 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
         ctl.failed(h, hfloor_);
         continue;
       }
-      for (int c = 0; c < 4; ++c) stats.error_estimate[c] += simpson5::error(st.D[c], st.S[c]) + depth_err;
+      for (int c = 0; c < 4; ++c) stats.error_estimate[c] += T * simpson5::error(st.D[c], st.S[c]) + depth_err;
       T = simpson5::add_step(st, T, C);
       if (stats.record_steps) stats.steps.push_back({true, ta + u, h, 1 - T});
       ctl.succeeded(hcap);
@@ -141,6 +140,48 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
       std::fill(known + 1, known + 5, false);
       u = h >= y - u ? y : u + h;
     }
+  };
+
+  // Not below the floor, where every step is accepted anyway: that keeps
+  // each step long enough to advance u whatever the cap (1 / huge tau).
+  auto piece_cap = [&](const Cubic& s, const TfSegment& seg, double x, double y) {
+    return std::max(hfloor_, std::min(hmax_, step_cap(s, seg, x, y)));
+  };
+
+  // Unlit, up to four pieces wait here and their first tries are made
+  // together (guaranteed_tries.hpp). An accepted first try is added from
+  // its lane, as integrate_piece would add it from the same bytes, and a
+  // piece longer than its cap goes on from the try's end (integrate_piece
+  // from there steps as it would have: its control starts at the cap
+  // again). A rejected try runs integrate_piece from the piece's start,
+  // whose first try is that lane's again.
+  struct Pending {
+    Cubic s;
+    const TfSegment* seg;
+    double ta, x, y, hcap;
+  };
+  Pending pending[simpson5::PieceTries::kLanes];
+  simpson5::PieceTries tries;
+  int npending = 0;
+  const auto flush = [&] {
+    for (int l = npending; l < tries.kLanes; ++l) tries.set(l, pending[0].s, *pending[0].seg, 0, 1);  // idle lanes
+    tries.run();
+    for (int l = 0; l < npending && T > cutoff; ++l) {
+      const Pending& p = pending[l];
+      const double h = std::min(p.y - p.x, p.hcap);
+      const double depth_err = T * tries.depth_err[l];
+      if ((T * tries.err[l] <= colour_density * h && depth_err <= depth_density * h) || h <= hfloor_) {
+        stats.evaluations += 5;
+        for (int c = 0; c < 4; ++c) stats.error_estimate[c] += T * tries.channel_err[c][l] + depth_err;
+        const double boole[4] = {tries.boole[0][l], tries.boole[1][l], tries.boole[2][l], tries.boole[3][l]};
+        T = simpson5::add_step(tries.attenuation[l], boole, T, C);
+        if (stats.record_steps) stats.steps.push_back({true, p.ta + p.x, h, 1 - T});
+        if (h < p.y - p.x) integrate_piece(p.s, *p.seg, p.ta, p.x + h, p.y, p.hcap);
+        continue;
+      }
+      integrate_piece(p.s, *p.seg, p.ta, p.x, p.y, p.hcap);
+    }
+    npending = 0;
   };
 
   // A brick walks its own part (GridVolume::Brick); the densities above stay
@@ -161,12 +202,19 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
     int nkinks = 0;
     if (shader_) nkinks = gradient_along(shader_->gradients(), cs, ray.dir, grad, kinks);
     splitter_->split(s, cs.tb - cs.ta, [&](double x, double y, const TfSegment& seg) {
+      if (!shader_) {
+        const double hcap = piece_cap(s, seg, x, y);
+        tries.set(npending, s, seg, x, std::min(y - x, hcap));
+        pending[npending++] = {s, &seg, cs.ta, x, y, hcap};
+        if (npending == tries.kLanes) flush();
+        return;
+      }
       for (int k = 0; k < nkinks; ++k)
         if (kinks[k] > x && kinks[k] < y) {
-          integrate_piece(s, seg, cs.ta, x, kinks[k]);
+          integrate_piece(s, seg, cs.ta, x, kinks[k], piece_cap(s, seg, x, kinks[k]));
           x = kinks[k];
         }
-      integrate_piece(s, seg, cs.ta, x, y);
+      integrate_piece(s, seg, cs.ta, x, y, piece_cap(s, seg, x, y));
     });
     return T > cutoff;
   };
@@ -174,6 +222,7 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
     for_each_cell_segment(volume_, ray, part, walk_cell);
     return T > cutoff;
   });
+  if (npending) flush();
   return {C[0], C[1], C[2], 1 - T};
 }
 

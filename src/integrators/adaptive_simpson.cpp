@@ -95,15 +95,15 @@ Rgba AdaptiveSimpsonIntegrator::integrate_typed(const Value* values, const Ray& 
     for (double u = a; u < b;) {
       const double h = std::min(outer.h, b - u);
       sample_step(u, h);
-      const auto st = simpson5::colour_step(f, T, h);
-      if (!accepted(st.err, h)) {
+      const auto st = simpson5::colour_step(f, h);
+      if (!accepted(T * st.err, h)) {
         outer.failed(h, hmin_);
         continue;
       }
       double tau_s, tau_d;
       tau_integrals(h, tau_s, tau_d);
       const double depth_err = T * simpson5::error(tau_d, tau_s);
-      for (int c = 0; c < 4; ++c) stats.error_estimate[c] += simpson5::error(st.D[c], st.S[c]) + depth_err;
+      for (int c = 0; c < 4; ++c) stats.error_estimate[c] += T * simpson5::error(st.D[c], st.S[c]) + depth_err;
       T = simpson5::add_step(st, T, C);
       if (stats.record_steps) stats.steps.push_back({true, u, h, 1 - T});
       outer.succeeded(hmax_);

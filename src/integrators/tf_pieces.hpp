@@ -15,7 +15,11 @@ namespace vri {
 
 class TfPieceSplitter {
  public:
-  explicit TfPieceSplitter(const TransferFunction& tf) : tf_(tf) {
+  // Pieces are also cut at s's critical points unless `monotone` is false,
+  // where a piece need only be smooth: then a cell whose field lies in one
+  // segment (as the convex hull of its Bernstein coefficients shows, without
+  // the roots of s') is one piece.
+  explicit TfPieceSplitter(const TransferFunction& tf, bool monotone = true) : tf_(tf), monotone_(monotone) {
     opaque_prefix_.assign(tf.segments().size() + 1, 0);
     for (std::size_t i = 0; i < tf.segments().size(); ++i)
       opaque_prefix_[i + 1] = opaque_prefix_[i] + (tf.segments()[i].transparent() ? 0 : 1);
@@ -25,6 +29,17 @@ class TfPieceSplitter {
   // [0, len] (t measured from the cell entry), front to back.
   template <class Piece>
   void split(const Cubic& s, double len, Piece&& piece) const {
+    if (!monotone_ && len > 0) {
+      // s on [0, len] in Bernstein form b0..b3 lies between their least and
+      // greatest.
+      const double b0 = s.c[0], b3 = s(len);
+      const double b1 = b0 + s.c[1] * len / 3, b2 = b3 - s.derivative(len) * len / 3;
+      const int i = tf_.segment_index(std::min(std::min(b0, b1), std::min(b2, b3)));
+      if (i == tf_.segment_index(std::max(std::max(b0, b1), std::max(b2, b3)))) {
+        if (!tf_.segments()[i].transparent()) piece(0.0, len, tf_.segments()[i]);
+        return;
+      }
+    }
     // Knots: the ends and the critical points, between which s is monotone.
     double knots[4], vals[4], crit[2];
     const int nc = s.critical_points(len, crit);
@@ -73,6 +88,7 @@ class TfPieceSplitter {
 
  private:
   const TransferFunction& tf_;
+  bool monotone_;
   std::vector<int> opaque_prefix_;  // opaque_prefix_[i]: non-transparent segments before i
 };
 

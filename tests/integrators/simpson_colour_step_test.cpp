@@ -1,5 +1,7 @@
 #include "integrators/simpson_colour_step.hpp"
 
+#include "integrators/guaranteed_tries.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,23 +22,23 @@ TEST(SimpsonColourStep, DepthsIntegrateAQuarticExactly) {
   };
   TfSample f[5];
   for (int k = 0; k < 5; ++k) f[k] = {0.5, 0.5, 0.5, tau(t0 + h * k / 4)};
-  const auto st = colour_step(f, 1.0, h);
+  const auto st = colour_step(f, h);
   EXPECT_EQ(st.depth[0], 0.0);
   for (int k = 1; k < 5; ++k) EXPECT_NEAR(st.depth[k], integral(t0 + h * k / 4) - integral(t0), 1e-15) << k;
   EXPECT_NEAR(st.attenuation, std::exp(-st.depth[4]), 1e-16);
 }
 
-// Against the loop the method is written as (Algorithm 3's I_O, simpson5.hpp),
-// with the C library's exp: the same sums to a few ulp, for random samples,
-// transmittances and steps.
+// Against the loop the method is written as (Algorithm 3's I_O, simpson5.hpp,
+// at T = 1), with the C library's exp: the same sums to a few ulp, for
+// random samples and steps.
 TEST(SimpsonColourStep, MatchesTheScalarSums) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> unit(0, 1), opt(0, 40);
   for (int trial = 0; trial < 2000; ++trial) {
     TfSample f[5];
     for (auto& s : f) s = {unit(rng), unit(rng), unit(rng), trial % 3 ? opt(rng) : unit(rng) * 1e-3};
-    const double T = unit(rng), h = 0.01 + unit(rng);
-    const auto st = colour_step(f, T, h);
+    const double h = 0.01 + unit(rng);
+    const auto st = colour_step(f, h);
     const double W[4][5] = {{251, 646, -264, 106, -19}, {29, 124, 24, 4, -1}, {27, 102, 72, 42, -3},
                             {14, 64, 24, 64, 14}};
     const double den[4] = {720, 90, 80, 45};
@@ -48,7 +50,7 @@ TEST(SimpsonColourStep, MatchesTheScalarSums) {
         depth *= h / 4 / den[k - 1];
         ASSERT_NEAR(st.depth[k], depth, 1e-13 * (1 + std::abs(depth)));
       }
-      const double w = f[k].tau * T * std::exp(-depth);
+      const double w = f[k].tau * std::exp(-depth);
       g[0][k] = f[k].r * w, g[1][k] = f[k].g * w, g[2][k] = f[k].b * w, g[3][k] = w;
     }
     for (int c = 0; c < 4; ++c) {
@@ -58,6 +60,56 @@ TEST(SimpsonColourStep, MatchesTheScalarSums) {
       err = std::max(err, simpson5::error(D, S));
     }
     ASSERT_NEAR(st.err, err, 1e-12 * err + 1e-15 * std::abs(st.D[3]));
+  }
+}
+
+// add_step at T: the opacity T (1 - e^{-depth}) exactly, and the colour the
+// Boole estimate of the try at T = 1 rescaled to it.
+TEST(SimpsonColourStep, AddStepScalesByTheTransmittance) {
+  const TfSample f[5] = {{0.2, 0.4, 0.6, 0.5}, {0.3, 0.4, 0.5, 0.8}, {0.4, 0.4, 0.4, 1.2}, {0.5, 0.4, 0.3, 0.9},
+                         {0.6, 0.4, 0.2, 0.4}};
+  const double h = 0.7, T = 0.35;
+  const auto st = colour_step(f, h);
+  double C[3] = {0, 0, 0};
+  const double T_after = simpson5::add_step(st, T, C);
+  EXPECT_DOUBLE_EQ(T_after, T * std::exp(-st.depth[4]));
+  const double boole_alpha = simpson5::corrected(st.D[3], st.S[3]);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(C[c], (T - T_after) * simpson5::corrected(st.D[c], st.S[c]) / boole_alpha, 1e-15);
+  // A greenish mean: the chromaticities' weighted mean stays between the samples'.
+  EXPECT_NEAR(C[1] / (T - T_after), 0.4, 1e-12);
+}
+
+// The four-lane first tries of `guaranteed` give, lane by lane, the bytes of
+// colour_step on the samples seg.at(s(u + h k / 4)): the integrator may add a
+// piece from either.
+TEST(PieceTries, LanesGiveTheBytesOfColourStep) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(0, 1), coef(-40, 40);
+  for (int trial = 0; trial < 500; ++trial) {
+    simpson5::PieceTries tries;
+    Cubic s[4];
+    TfSegment seg[4];
+    for (int l = 0; l < 4; ++l) {
+      s[l] = {{100 * unit(rng), coef(rng), coef(rng) / 4, coef(rng) / 16}};
+      seg[l].s_ref = 100 * unit(rng);
+      seg[l].ref = {unit(rng), unit(rng), unit(rng), 2 * unit(rng)};
+      seg[l].slope = {unit(rng) / 50, -unit(rng) / 50, unit(rng) / 50, unit(rng) / 20};
+      tries.set(l, s[l], seg[l], unit(rng), 0.01 + unit(rng));
+    }
+    tries.run();
+    for (int l = 0; l < 4; ++l) {
+      TfSample f[5];
+      for (int k = 0; k < 5; ++k) f[k] = seg[l].at(s[l](tries.u[l] + tries.h[l] * (0.25 * k)));
+      const auto st = colour_step(f, tries.h[l]);
+      ASSERT_EQ(tries.err[l], st.err) << trial << " " << l;
+      ASSERT_EQ(tries.attenuation[l], st.attenuation);
+      ASSERT_EQ(tries.depth_err[l], simpson5::error(simpson5::halves(st.tau, tries.h[l]), simpson5::whole(st.tau, tries.h[l])));
+      for (int c = 0; c < 4; ++c) {
+        ASSERT_EQ(tries.channel_err[c][l], simpson5::error(st.D[c], st.S[c]));
+        ASSERT_EQ(tries.boole[c][l], simpson5::corrected(st.D[c], st.S[c]));
+      }
+    }
   }
 }
 
