@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "cell_cubics.hpp"
 #include "cubic.hpp"
 #include "early_stop.hpp"
 #include "guaranteed_tries.hpp"
@@ -184,6 +185,29 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
     npending = 0;
   };
 
+  // Unlit, the pieces of one cell (its cubic s on [0, len], t from ta) wait
+  // for their first tries.
+  const auto split_unlit = [&](const Cubic& s, double ta, double len) {
+    splitter_->split(s, len, [&](double x, double y, const TfSegment& seg) {
+      const double hcap = piece_cap(s, seg, x, y);
+      tries.set(npending, s, seg, x, std::min(y - x, hcap));
+      pending[npending++] = {s, &seg, ta, x, y, hcap};
+      if (npending == tries.kLanes) flush();
+    });
+  };
+  // And the cells wait for their cubics, made four at a time
+  // (cell_cubics.hpp, the bytes of trilinear_along).
+  CellCubics cubics;
+  double cell_ta[CellCubics::kLanes], cell_len[CellCubics::kLanes];
+  int ncells = 0;
+  const auto flush_cells = [&] {
+    cubics.run();
+    for (int l = 0; l < ncells; ++l)
+      if (!zero_bins_.over(cubics.lo[l] - margin_, cubics.hi[l] + margin_))
+        split_unlit({{cubics.c[0][l], cubics.c[1][l], cubics.c[2][l], cubics.c[3][l]}}, cell_ta[l], cell_len[l]);
+    ncells = 0;
+  };
+
   // A brick walks its own part (GridVolume::Brick); the densities above stay
   // the whole ray's, so the bricks' errors add up to one machine's budget.
   // Only the runs of non-empty macro cells are walked.
@@ -192,23 +216,22 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
     // rounding) has zero extinction is transparent on every piece: skipped
     // before its cubic is built (on its bit where the cells were classified).
     if (transparent_ && transparent_->transparent(cs.cell[0], cs.cell[1], cs.cell[2])) return T > cutoff;
+    if (!shader_) {
+      cubics.set(ncells, values, volume_, cs);
+      cell_ta[ncells] = cs.ta, cell_len[ncells] = cs.tb - cs.ta;
+      if (++ncells == CellCubics::kLanes) flush_cells();
+      return T > cutoff;
+    }
     const std::array<float, 8> c = corners_as_float(values + volume_.index(cs.cell[0], cs.cell[1], cs.cell[2]), sy, sz);
     const std::array<double, 8> corners = {c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]};
     const auto [lo, hi] = std::minmax_element(corners.begin(), corners.end());
     if (zero_bins_.over(*lo - margin_, *hi + margin_)) return T > cutoff;
     const Cubic s = trilinear_along(corners, cs);
-    // Lit: |N.d| has a kink where N.d changes sign; pieces are cut there too.
+    // Lit, one cell at a time: |N.d| has a kink where N.d changes sign;
+    // pieces are cut there too.
     double kinks[3];
-    int nkinks = 0;
-    if (shader_) nkinks = gradient_along(shader_->gradients(), cs, ray.dir, grad, kinks);
+    const int nkinks = gradient_along(shader_->gradients(), cs, ray.dir, grad, kinks);
     splitter_->split(s, cs.tb - cs.ta, [&](double x, double y, const TfSegment& seg) {
-      if (!shader_) {
-        const double hcap = piece_cap(s, seg, x, y);
-        tries.set(npending, s, seg, x, std::min(y - x, hcap));
-        pending[npending++] = {s, &seg, cs.ta, x, y, hcap};
-        if (npending == tries.kLanes) flush();
-        return;
-      }
       for (int k = 0; k < nkinks; ++k)
         if (kinks[k] > x && kinks[k] < y) {
           integrate_piece(s, seg, cs.ta, x, kinks[k], piece_cap(s, seg, x, kinks[k]));
@@ -222,6 +245,7 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
     for_each_cell_segment(volume_, ray, part, walk_cell);
     return T > cutoff;
   });
+  if (ncells) flush_cells();
   if (npending) flush();
   return {C[0], C[1], C[2], 1 - T};
 }

@@ -2,6 +2,7 @@
 
 #include "core/f64x4.hpp"
 #include "core/simd.hpp"
+#include "simpson5.hpp"
 
 namespace vri::simpson5 {
 
@@ -10,9 +11,6 @@ namespace vri::simpson5 {
 // their order.
 VRI_AVX2_CLONES void PieceTries::run() {
   using namespace f64x4;
-  static constexpr double kW[5][4] = {
-      {251, 29, 27, 14}, {646, 124, 102, 64}, {-264, 24, 72, 24}, {106, 4, 42, 64}, {-19, -1, -3, 14}};
-  static constexpr double kDen[4] = {720, 90, 80, 45};
   const V cu[4] = {load(c[0]), load(c[1]), load(c[2]), load(c[3])};
   const V h0 = load(h), u0 = load(u), sr = load(s_ref);
   // The samples: TfSegment::at(s(u + h (k / 4))), channel by channel.
@@ -25,9 +23,9 @@ VRI_AVX2_CLONES void PieceTries::run() {
   V w[5], e4 = splat(1);
   w[0] = v[0][3];
   for (int k = 1; k < 5; ++k) {
-    V sum = kW[0][k - 1] * v[0][3];
-    for (int j = 1; j < 5; ++j) sum = sum + kW[j][k - 1] * v[j][3];
-    const V e = exp_neg(sum * (h0 / 4 / kDen[k - 1]));
+    V sum = kDepthWeights[0][k - 1] * v[0][3];
+    for (int j = 1; j < 5; ++j) sum = sum + kDepthWeights[j][k - 1] * v[j][3];
+    const V e = exp_neg(sum * (h0 * kDepthScale[k - 1]));
     w[k] = v[k][3] * e;
     if (k == 4) e4 = e;
   }
@@ -36,17 +34,17 @@ VRI_AVX2_CLONES void PieceTries::run() {
   for (int ch = 0; ch < 4; ++ch) {
     V g[5];
     for (int k = 0; k < 5; ++k) g[k] = (ch < 3 ? v[k][ch] : splat(1.0)) * w[k];
-    const V S = h0 / 6 * ((g[0] + 4 * g[2]) + g[4]);
-    const V D = h0 / 12 * ((((g[0] + 4 * g[1]) + 2 * g[2]) + 4 * g[3]) + g[4]);
+    const V S = h0 * kSixth * ((g[0] + 4 * g[2]) + g[4]);
+    const V D = h0 * kTwelfth * ((((g[0] + 4 * g[1]) + 2 * g[2]) + 4 * g[3]) + g[4]);
     const V gap = abs(D - S);
     largest = gap > largest ? gap : largest;
-    store(channel_err[ch], gap / 15);
-    store(boole[ch], D + (D - S) / 15);
+    store(channel_err[ch], gap * kFifteenth);
+    store(boole[ch], D + (D - S) * kFifteenth);
   }
-  store(err, largest / 15);
-  const V t_whole = h0 / 6 * ((v[0][3] + 4 * v[2][3]) + v[4][3]);
-  const V t_halves = h0 / 12 * ((((v[0][3] + 4 * v[1][3]) + 2 * v[2][3]) + 4 * v[3][3]) + v[4][3]);
-  store(depth_err, abs(t_halves - t_whole) / 15);
+  store(err, largest * kFifteenth);
+  const V t_whole = h0 * kSixth * ((v[0][3] + 4 * v[2][3]) + v[4][3]);
+  const V t_halves = h0 * kTwelfth * ((((v[0][3] + 4 * v[1][3]) + 2 * v[2][3]) + 4 * v[3][3]) + v[4][3]);
+  store(depth_err, abs(t_halves - t_whole) * kFifteenth);
 }
 
 }  // namespace vri::simpson5
