@@ -1,5 +1,7 @@
 #include "integrators/cubic.hpp"
 
+#include "integrators/cell_cubics.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -51,6 +53,51 @@ TEST(Cubic, CriticalPointsAndMonotoneRoots) {
   const Cubic line{{1, 2, 0, 0}};
   EXPECT_EQ(line.critical_points(10, crit), 0);
   EXPECT_NEAR(line.solve_monotone(4, 0, 10), 1.5, 1e-15);
+}
+
+// The four-lane cubics of `guaranteed` are trilinear_along's, to the bit,
+// for every cell a ray crosses (four at a time, the last group partly
+// filled), and their ranges the corners'.
+TEST(CellCubics, LanesGiveTheBytesOfTrilinearAlong) {
+  const auto vol = random_field({7, 6, 8}, 3);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int checked = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const Vec3 target{3 + u(rng), 2.5 + u(rng), 3.5 + u(rng)};
+    const Ray ray{target - 15 * normalize({u(rng), u(rng), u(rng)}), {}};
+    const Ray r{ray.origin, normalize(target - ray.origin)};
+    const auto iv = clip_to_box(r, vol.box_lo(), vol.box_hi());
+    ASSERT_TRUE(iv);
+    std::vector<CellSegment> cells;
+    for_each_cell_segment(vol, r, *iv, [&](const CellSegment& seg) {
+      cells.push_back(seg);
+      return true;
+    });
+    vol.visit([&](auto values) {
+      for (std::size_t first = 0; first < cells.size(); first += CellCubics::kLanes) {
+        CellCubics cubics;
+        const int n = static_cast<int>(std::min<std::size_t>(CellCubics::kLanes, cells.size() - first));
+        for (int l = 0; l < CellCubics::kLanes; ++l) cubics.set(l, values.data(), vol, cells[first + std::min(l, n - 1)]);
+        cubics.run();
+        for (int l = 0; l < n; ++l) {
+          const CellSegment& seg = cells[first + l];
+          const Cubic s = trilinear_along(vol, seg);
+          for (int j = 0; j < 4; ++j) ASSERT_EQ(cubics.c[j][l], s.c[j]) << trial << " " << l << " " << j;
+          const auto& c = seg.cell;
+          double lo = INFINITY, hi = -INFINITY;
+          for (int k = 0; k < 8; ++k) {
+            const double v = vol.at(c[0] + (k & 1), c[1] + (k >> 1 & 1), c[2] + (k >> 2));
+            lo = std::min(lo, v), hi = std::max(hi, v);
+          }
+          ASSERT_EQ(cubics.lo[l], lo);
+          ASSERT_EQ(cubics.hi[l], hi);
+          ++checked;
+        }
+      }
+    });
+  }
+  EXPECT_GT(checked, 300);
 }
 
 }  // namespace
