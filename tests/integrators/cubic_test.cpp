@@ -12,18 +12,25 @@
 namespace vri {
 namespace {
 
+// A ray from 15 units away, in a random direction, through a random point
+// within 1 of `centre` (inside the volume), and its stretch in the box.
+std::pair<Ray, Interval> ray_through(const GridVolume& vol, Vec3 centre, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  const Vec3 target{centre.x + u(rng), centre.y + u(rng), centre.z + u(rng)};
+  const Vec3 origin = target - 15 * normalize({u(rng), u(rng), u(rng)});
+  const Ray r{origin, normalize(target - origin)};
+  const auto iv = clip_to_box(r, vol.box_lo(), vol.box_hi());
+  EXPECT_TRUE(iv);
+  return {r, iv.value_or(Interval{0, 0})};
+}
+
 TEST(Cubic, TrilinearAlongMatchesSamplingInsideEveryCell) {
   const auto vol = random_field({6, 5, 7}, 11);
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-1, 1);
   int checked = 0;
   for (int trial = 0; trial < 50; ++trial) {
-    const Vec3 target{2.5 + u(rng), 2 + u(rng), 3 + u(rng)};
-    const Ray ray{target - 15 * normalize({u(rng), u(rng), u(rng)}), {}};
-    const Ray r{ray.origin, normalize(target - ray.origin)};
-    const auto iv = clip_to_box(r, vol.box_lo(), vol.box_hi());
-    ASSERT_TRUE(iv);
-    for_each_cell_segment(vol, r, *iv, [&](const CellSegment& seg) {
+    const auto [r, iv] = ray_through(vol, {2.5, 2, 3}, rng);
+    for_each_cell_segment(vol, r, iv, [&](const CellSegment& seg) {
       const Cubic s = trilinear_along(vol, seg);
       for (double f : {0.0, 0.3, 0.71, 1.0}) {
         const double t = f * (seg.tb - seg.ta);
@@ -61,16 +68,11 @@ TEST(Cubic, CriticalPointsAndMonotoneRoots) {
 TEST(CellCubics, LanesGiveTheBytesOfTrilinearAlong) {
   const auto vol = random_field({7, 6, 8}, 3);
   std::mt19937 rng(9);
-  std::uniform_real_distribution<double> u(-1, 1);
   int checked = 0;
   for (int trial = 0; trial < 40; ++trial) {
-    const Vec3 target{3 + u(rng), 2.5 + u(rng), 3.5 + u(rng)};
-    const Ray ray{target - 15 * normalize({u(rng), u(rng), u(rng)}), {}};
-    const Ray r{ray.origin, normalize(target - ray.origin)};
-    const auto iv = clip_to_box(r, vol.box_lo(), vol.box_hi());
-    ASSERT_TRUE(iv);
+    const auto [r, iv] = ray_through(vol, {3, 2.5, 3.5}, rng);
     std::vector<CellSegment> cells;
-    for_each_cell_segment(vol, r, *iv, [&](const CellSegment& seg) {
+    for_each_cell_segment(vol, r, iv, [&](const CellSegment& seg) {
       cells.push_back(seg);
       return true;
     });
