@@ -201,7 +201,7 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
   double cell_ta[CellCubics::kLanes], cell_len[CellCubics::kLanes];
   int ncells = 0;
   const auto flush_cells = [&] {
-    cubics.run();
+    cubics.run(ncells);
     for (int l = 0; l < ncells; ++l)
       if (!zero_bins_.over(cubics.lo[l] - margin_, cubics.hi[l] + margin_))
         split_unlit({{cubics.c[0][l], cubics.c[1][l], cubics.c[2][l], cubics.c[3][l]}}, cell_ta[l], cell_len[l]);

@@ -6,7 +6,7 @@
 namespace vri {
 
 // trilinear_along (cubic.cpp) lane by lane, each expression in its order.
-VRI_AVX2_CLONES void CellCubics::run() {
+VRI_AVX2_CLONES void CellCubics::run_lanes() {
   using namespace f64x4;
   const V c000 = load(corner[0]), c100 = load(corner[1]), c010 = load(corner[2]), c110 = load(corner[3]),
           c001 = load(corner[4]), c101 = load(corner[5]), c011 = load(corner[6]), c111 = load(corner[7]);

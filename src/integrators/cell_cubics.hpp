@@ -29,8 +29,18 @@ struct CellCubics {
     for (int k = 0; k < 8; ++k) corner[k][l] = v[k];
     for (int a = 0; a < 3; ++a) local0[a][l] = cs.local0[a], dir[a] = cs.local_dir[a];
   }
-  // Fills the output of every lane.
-  void run();
+  // Fills the output of every lane; lanes from `used` on (idle at a ray's
+  // end) first repeat lane 0's input.
+  void run(int used = kLanes) {
+    for (int l = used; l < kLanes; ++l) {
+      for (int k = 0; k < 8; ++k) corner[k][l] = corner[k][0];
+      for (int a = 0; a < 3; ++a) local0[a][l] = local0[a][0];
+    }
+    run_lanes();
+  }
+
+ private:
+  void run_lanes();
 };
 
 }  // namespace vri

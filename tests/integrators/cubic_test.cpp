@@ -80,8 +80,8 @@ TEST(CellCubics, LanesGiveTheBytesOfTrilinearAlong) {
       for (std::size_t first = 0; first < cells.size(); first += CellCubics::kLanes) {
         CellCubics cubics;
         const int n = static_cast<int>(std::min<std::size_t>(CellCubics::kLanes, cells.size() - first));
-        for (int l = 0; l < CellCubics::kLanes; ++l) cubics.set(l, values.data(), vol, cells[first + std::min(l, n - 1)]);
-        cubics.run();
+        for (int l = 0; l < n; ++l) cubics.set(l, values.data(), vol, cells[first + l]);
+        cubics.run(n);
         for (int l = 0; l < n; ++l) {
           const CellSegment& seg = cells[first + l];
           const Cubic s = trilinear_along(vol, seg);
