@@ -70,7 +70,11 @@ GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& vol
   // Marschner-Lobb (docs/ADAPTIVE.md, Lighting).
   if (shader_) hmax_ = std::min(hmax_, 0.25 * volume.voxel_unit());
   hfloor_ = 1e-4 * volume.voxel_unit();
-  splitter_ = std::make_unique<TfPieceSplitter>(tf, /*monotone=*/false);
+  // Unlit, a cell whose field lies in one segment is one piece. Lit, pieces
+  // stay cut at s's critical points too: near a vanishing gradient the
+  // specular spike lies there, and a whole-cell first try can miss it
+  // (marschner_lobb_lit at 1e-4 had 0.01 % of its pixels over).
+  splitter_ = std::make_unique<TfPieceSplitter>(tf, /*monotone=*/lighting.enabled);
   if (const EmptySpace* space = skipping_.space()) transparent_.emplace(volume, *space, zero_bins_, margin_);
 }
 

@@ -26,8 +26,8 @@
 // brightest lit colour, ka + kd + ks (when above 1), and steps are at most a
 // quarter voxel (the specular spike near a vanishing gradient is narrow).
 // Samples come from the cell's cubic and the piece's linear transfer-function
-// segment, so an evaluation costs a few multiplications. A cell whose field
-// lies in one segment (its cubic's Bernstein hull) is one piece. Unlit, the
+// segment, so an evaluation costs a few multiplications. Unlit, a cell whose
+// field lies in one segment (its cubic's Bernstein hull) is one piece, and the
 // cells' cubics and the pieces' first tries are made four at a time, lanes
 // over cells or pieces (src/integrators/cell_cubics.hpp, guaranteed_tries.hpp),
 // with the bytes of one at a time.
