@@ -169,8 +169,7 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
   simpson5::PieceTries tries;
   int npending = 0;
   const auto flush = [&] {
-    for (int l = npending; l < tries.kLanes; ++l) tries.set(l, pending[0].s, *pending[0].seg, 0, 1);  // idle lanes
-    tries.run();
+    tries.run(npending);
     for (int l = 0; l < npending && T > cutoff; ++l) {
       const Pending& p = pending[l];
       const double h = std::min(p.y - p.x, p.hcap);

@@ -6,10 +6,10 @@
 
 namespace vri::simpson5 {
 
-// colour_step (simpson_colour_step.cpp) lane by lane, with the samples,
-// whole(), halves(), error() and corrected() of simpson5.hpp written out in
-// their order.
-VRI_AVX2_CLONES void PieceTries::run() {
+// colour_step (simpson_colour_step.cpp) lane by lane, on the samples, with
+// simpson5.hpp's whole(), halves() and corrected() on the lanes (error()
+// written out: |D - S| / 15 as a product).
+VRI_AVX2_CLONES void PieceTries::run_lanes() {
   using namespace f64x4;
   const V cu[4] = {load(c[0]), load(c[1]), load(c[2]), load(c[3])};
   const V h0 = load(h), u0 = load(u), sr = load(s_ref);
@@ -34,17 +34,15 @@ VRI_AVX2_CLONES void PieceTries::run() {
   for (int ch = 0; ch < 4; ++ch) {
     V g[5];
     for (int k = 0; k < 5; ++k) g[k] = (ch < 3 ? v[k][ch] : splat(1.0)) * w[k];
-    const V S = h0 * kSixth * ((g[0] + 4 * g[2]) + g[4]);
-    const V D = h0 * kTwelfth * ((((g[0] + 4 * g[1]) + 2 * g[2]) + 4 * g[3]) + g[4]);
+    const V S = whole(g, h0), D = halves(g, h0);
     const V gap = abs(D - S);
     largest = gap > largest ? gap : largest;
-    store(channel_err[ch], gap * kFifteenth);
-    store(boole[ch], D + (D - S) * kFifteenth);
+    store(channel_err[ch], gap * kFifteenth);  // error(D, S)
+    store(boole[ch], corrected(D, S));
   }
   store(err, largest * kFifteenth);
-  const V t_whole = h0 * kSixth * ((v[0][3] + 4 * v[2][3]) + v[4][3]);
-  const V t_halves = h0 * kTwelfth * ((((v[0][3] + 4 * v[1][3]) + 2 * v[2][3]) + 4 * v[3][3]) + v[4][3]);
-  store(depth_err, abs(t_halves - t_whole) * kFifteenth);
+  const V tau[5] = {v[0][3], v[1][3], v[2][3], v[3][3], v[4][3]};
+  store(depth_err, abs(halves(tau, h0) - whole(tau, h0)) * kFifteenth);
 }
 
 }  // namespace vri::simpson5

@@ -33,8 +33,18 @@ struct PieceTries {
     for (int ch = 0; ch < 4; ++ch) ref[ch][l] = r[ch], slope[ch][l] = d[ch];
     u[l] = u0, h[l] = h0;
   }
-  // Fills the output of every lane.
-  void run();
+  // Fills the output of every lane; lanes from `used` on (idle at a ray's
+  // end) first repeat lane 0's input.
+  void run(int used = kLanes) {
+    for (int l = used; l < kLanes; ++l) {
+      for (int j = 0; j < 4; ++j) c[j][l] = c[j][0], ref[j][l] = ref[j][0], slope[j][l] = slope[j][0];
+      s_ref[l] = s_ref[0], u[l] = u[0], h[l] = h[0];
+    }
+    run_lanes();
+  }
+
+ private:
+  void run_lanes();
 };
 
 }  // namespace vri::simpson5

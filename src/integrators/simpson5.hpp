@@ -23,15 +23,21 @@ inline constexpr double kDepthWeights[5][4] = {
     {251, 29, 27, 14}, {646, 124, 102, 64}, {-264, 24, 72, 24}, {106, 4, 42, 64}, {-19, -1, -3, 14}};
 inline constexpr double kDepthScale[4] = {1.0 / 2880, 1.0 / 360, 1.0 / 320, 1.0 / 180};  // 1 / (4 x 720, 90, 80, 45)
 
-inline double whole(const double (&f)[5], double h) { return h * kSixth * (f[0] + 4 * f[2] + f[4]); }
+// On doubles, and on the lanes of core/f64x4.hpp's vectors (samples T, step
+// H a double or lanes too) in the same order, so that the vector tries give
+// the bytes of the scalar ones.
+template <class T, class H>
+inline T whole(const T (&f)[5], H h) { return h * kSixth * (f[0] + 4 * f[2] + f[4]); }
 
-inline double halves(const double (&f)[5], double h) {
+template <class T, class H>
+inline T halves(const T (&f)[5], H h) {
   return h * kTwelfth * (f[0] + 4 * f[1] + 2 * f[2] + 4 * f[3] + f[4]);
 }
 
 inline double error(double d, double s) { return std::abs(d - s) * kFifteenth; }
 
-inline double corrected(double d, double s) { return d + (d - s) * kFifteenth; }
+template <class T>
+inline T corrected(T d, T s) { return d + (d - s) * kFifteenth; }
 
 // Algorithm 2's step control: halve the step (and with it the tolerance) on a
 // failed try; double both after the second consecutive success; keep the step

@@ -31,8 +31,7 @@ VRI_AVX2_CLONES ColourStep colour_step(const TfSample (&f)[5], double h) {
   const double wk[5] = {f[0].tau, w[0], w[1], w[2], w[3]};  // e^0 = 1
   V g[5];
   for (int k = 0; k < 5; ++k) g[k] = V{f[k].r, f[k].g, f[k].b, 1.0} * wk[k];
-  const V S = h * kSixth * ((g[0] + 4 * g[2]) + g[4]);
-  const V D = h * kTwelfth * ((((g[0] + 4 * g[1]) + 2 * g[2]) + 4 * g[3]) + g[4]);
+  const V S = whole(g, h), D = halves(g, h);
   store(st.S, S);
   store(st.D, D);
   st.err = max_lane(abs(D - S)) * kFifteenth;  // = the largest error(D, S): scaling keeps the order
