@@ -213,13 +213,9 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
       __m256i index = _mm256_add_epi32(
           load(L.cell[0]), _mm256_add_epi32(_mm256_mullo_epi32(load(L.cell[1]), _mm256_set1_epi32(sy)),
                                             _mm256_mullo_epi32(load(L.cell[2]), _mm256_set1_epi32(sz))));
-      alignas(32) int at[kPacket];
-      store(at, _mm256_castps_si256(_mm256_and_ps(_mm256_castsi256_ps(index), m)));
+      index = _mm256_castps_si256(_mm256_and_ps(_mm256_castsi256_ps(index), m));
       __m256 lo[4], hi[4];  // the corner pairs along x at (y, z) = (0, 0), (1, 0), (0, 1), (1, 1)
-      pair8(values, at, lo[0], hi[0]);
-      pair8(values + sy, at, lo[1], hi[1]);
-      pair8(values + sz, at, lo[2], hi[2]);
-      pair8(values + sz + sy, at, lo[3], hi[3]);
+      corner_pairs8(values, index, sy, sz, lo, hi);
       // The front, middle and back samples, their places on the table axis
       // and, lit, their gradients.
       __m256i i[3];
@@ -227,7 +223,7 @@ __attribute__((target("avx2"))) void march_dual(const GridVolume& volume, const 
       Cells8 cells[3];
       const double scale[3] = {0, 0.5, 1};
       for (int k = 0; k < 3; ++k) {
-        const Cells8& cell = cells[k] = {load(at), fraction8(L, 0, scale[k]), fraction8(L, 1, scale[k]),
+        const Cells8& cell = cells[k] = {index, fraction8(L, 0, scale[k]), fraction8(L, 1, scale[k]),
                                          fraction8(L, 2, scale[k])};
         const __m256 s = lerp(lerp(lerp(lo[0], hi[0], cell.fx), lerp(lo[1], hi[1], cell.fx), cell.fy),
                               lerp(lerp(lo[2], hi[2], cell.fx), lerp(lo[3], hi[3], cell.fx), cell.fy), cell.fz);

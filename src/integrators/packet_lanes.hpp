@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "float_march.hpp"
 #include "float_packet.hpp"
@@ -238,12 +239,43 @@ VRI_AVX2 void pair8(const std::int16_t* base, const int* index, __m256& lo, __m2
   hi = _mm256_cvtepi32_ps(_mm256_srai_epi32(p, 16));
 }
 
-// base[index] and base[index + 1] of the 8 lanes, interpolated at f.
+// The corner pairs (v[i], v[i + 1]) along x of the 8 lanes' cells at (y, z)
+// = (0, 0), (1, 0), (0, 1), (1, 1): i = index + {0, sy, sz, sz + sy}, in
+// float (exactly). Floats are read as 8-byte pairs (pair8). 1- and 2-byte
+// samples are gathered 32 bits a lane: a 2-byte pair is the 32 bits read,
+// a 1-byte pair the low half of the 4 bytes at i, except at (1, 1), where
+// the 4 bytes end at i + 1 (read from i - 2: the high half), so that no read
+// passes the last sample (a cell's first corner lies below the grid's last
+// point on every axis, so i + 1 <= the last index only there). The gathers
+// take the place of 8 scalar loads and inserts a pair (1.01x the frame on
+// the turned engine, one thread).
 template <class T>
-VRI_AVX2 __m256 lerp_pair(const T* base, const int* index, __m256 f) {
-  __m256 lo, hi;
-  pair8(base, index, lo, hi);
-  return lerp(lo, hi, f);
+VRI_AVX2 void corner_pairs8(const T* v, __m256i index, std::size_t sy, std::size_t sz, __m256 lo[4], __m256 hi[4]) {
+  const std::size_t row[4] = {0, sy, sz, sz + sy};
+  if constexpr (std::is_same_v<T, float>) {
+    alignas(32) int at[kPacket];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(at), index);
+    for (int r = 0; r < 4; ++r) pair8(v + row[r], at, lo[r], hi[r]);
+  } else {
+    for (int r = 0; r < 4; ++r) {
+      if constexpr (sizeof(T) == 1) {
+        const int back = r == 3 ? 2 : 0;
+        const __m256i p = _mm256_i32gather_epi32(reinterpret_cast<const int*>(v + row[r] - back), index, 1);
+        const __m256i q = _mm256_srli_epi32(p, 8 * back);
+        lo[r] = _mm256_cvtepi32_ps(_mm256_and_si256(q, _mm256_set1_epi32(0xff)));
+        hi[r] = _mm256_cvtepi32_ps(_mm256_and_si256(_mm256_srli_epi32(q, 8), _mm256_set1_epi32(0xff)));
+      } else {
+        const __m256i p = _mm256_i32gather_epi32(reinterpret_cast<const int*>(v + row[r]), index, 2);
+        if constexpr (std::is_signed_v<T>) {  // sign-extended by the arithmetic shifts
+          lo[r] = _mm256_cvtepi32_ps(_mm256_srai_epi32(_mm256_slli_epi32(p, 16), 16));
+          hi[r] = _mm256_cvtepi32_ps(_mm256_srai_epi32(p, 16));
+        } else {
+          lo[r] = _mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xffff)));
+          hi[r] = _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 16));
+        }
+      }
+    }
+  }
 }
 
 // FloatSampler::cell of the 8 lanes' samples k: each lane's first corner
@@ -271,10 +303,10 @@ VRI_AVX2 __m256 sample8(const FloatSampler& sampler, const T* v, const Lanes& L,
   const Cells8 c = cells8(sampler, L, k);
   if (cells) *cells = c;
   const std::size_t sy = sampler.stride_y(), sz = sampler.stride_z();
-  alignas(32) int at[kPacket];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(at), c.index);
-  const __m256 c00 = lerp_pair(v, at, c.fx), c10 = lerp_pair(v + sy, at, c.fx);
-  const __m256 c01 = lerp_pair(v + sz, at, c.fx), c11 = lerp_pair(v + sz + sy, at, c.fx);
+  __m256 lo[4], hi[4];
+  corner_pairs8(v, c.index, sy, sz, lo, hi);
+  const __m256 c00 = lerp(lo[0], hi[0], c.fx), c10 = lerp(lo[1], hi[1], c.fx);
+  const __m256 c01 = lerp(lo[2], hi[2], c.fx), c11 = lerp(lo[3], hi[3], c.fx);
   return lerp(lerp(c00, c10, c.fy), lerp(c01, c11, c.fy), c.fz);
 }
 
