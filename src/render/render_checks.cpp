@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <bit>
+#include <cstdint>
+#include <span>
 
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
@@ -85,8 +88,25 @@ void check_work(const Scene& scene, const Camera& camera) {
                 "; raise it with --max-work N (scene method.max_work), or use a larger step or a smaller image");
 }
 
+namespace {
+
+// Whether every value is finite: a value is not where its exponent bits are
+// all ones, and adding one to that field then carries into the top bit.
+// Integer and/add/or only, so that the compiler vectorizes it: the check
+// runs on every frame, in one thread, after the parallel render (a find_if
+// with std::isfinite took about 1 ms of a 30 ms 512^2 frame).
+bool all_finite(std::span<const float> d) {
+  constexpr std::uint32_t kExponent = 0x7f800000u, kOne = 0x00800000u;
+  std::uint32_t carried = 0;
+  for (const float v : d) carried |= (std::bit_cast<std::uint32_t>(v) & kExponent) + kOne;
+  return !(carried & 0x80000000u);
+}
+
+}  // namespace
+
 void refuse_non_finite(const Image& image, const std::string& what) {
   const auto& d = image.data();
+  if (all_finite(d)) return;
   const auto bad = std::find_if(d.begin(), d.end(), [](float v) { return !std::isfinite(v); });
   if (bad == d.end()) return;
   const std::size_t i = std::size_t(bad - d.begin()), pixel = i / 4;

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <vector>
 
+#include "camera/screen_footprint.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri {
@@ -20,6 +21,10 @@ Image render(const Camera& camera, const Integrator& integrator, const RenderOpt
   const int tiles_x = (W + ts - 1) / ts, tiles_y = (H + ts - 1) / ts;
   Image image(W, H);
   const int tiles = tiles_x * tiles_y;
+  // Only the pixels whose rays may meet the method's footprint are cast; the
+  // others keep the image's zeros, what their rays would give.
+  const auto footprint = integrator.footprint();
+  const ScreenFootprint seen = footprint ? ScreenFootprint(camera, *footprint) : ScreenFootprint(camera);
   std::atomic<int> done{0};
   auto render_tiles = [&](const tbb::blocked_range<int>& range) {
     for (int t = range.begin(); t != range.end(); ++t) {
@@ -35,13 +40,17 @@ Image render(const Camera& camera, const Integrator& integrator, const RenderOpt
       std::vector<Rgba> out(rays.size());
       std::vector<std::array<int, 2>> pixel(rays.size());
       for (int y = y0; y < y1; y += 2) {
+        // The blocks that reach into the footprint's pixels, on the tile's grid of blocks.
+        const ScreenFootprint::Span span = seen.rows(y, std::min(y1, y + 2));
+        const int bx1 = std::min(x1, span.x1);
         int n = 0;
-        for (int bx = x0; bx < x1; bx += 4)
+        for (int bx = x0 + std::max(0, (span.x0 - x0) / 4 * 4); bx < bx1; bx += 4)
           for (int py = y; py < std::min(y1, y + 2); ++py)
             for (int px = bx; px < std::min(x1, bx + 4); ++px) {
               pixel[n] = {px, py};
               rays[n++] = camera.ray(px, py);
             }
+        if (n == 0) continue;
         integrator.integrate_row(rays.data(), n, out.data());
         for (int i = 0; i < n; ++i) image.set(pixel[i][0], pixel[i][1], out[i]);
       }

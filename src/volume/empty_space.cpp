@@ -67,6 +67,19 @@ bool EmptySpace::occupied_span(const Ray& ray, Face&& face, double& b0, double& 
   return b0 <= b1;
 }
 
+Box EmptySpace::occupied_box() const {
+  const GridVolume& v = cells_.volume();
+  if (!(box_lo_[0] < box_hi_[0])) return {v.origin(), v.origin()};
+  const Vec3 lo = v.whole_lo(), hi = v.whole_hi();
+  Box box;
+  for (int a = 0; a < 3; ++a) {
+    const double cell = MacroCells::kCells * v.spacing()[a];
+    box.lo[a] = std::clamp(v.origin()[a] + box_lo_[a] * cell, lo[a], hi[a]);
+    box.hi[a] = std::clamp(v.origin()[a] + box_hi_[a] * cell, lo[a], hi[a]);
+  }
+  return box;
+}
+
 std::size_t EmptySpace::empty_count() const {
   return static_cast<std::size_t>(std::count(empty_.begin(), empty_.end(), std::uint8_t{1}));
 }

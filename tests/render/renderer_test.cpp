@@ -4,9 +4,12 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include "test_support.hpp"
+#include "camera/screen_footprint.hpp"
 #include "vri/integrators/exact.hpp"
+#include "vri/integrators/make_integrator.hpp"
 #include "vri/integrators/preint1.hpp"
 #include "vri/integrators/riemann.hpp"
 #include "vri/scene/scene.hpp"
@@ -53,6 +56,83 @@ TEST(Renderer, EveryPixelGetsItsOwnRaysIntegral) {
           ASSERT_EQ(img.pixel(x, y)[c], static_cast<float>(want[c])) << "tile " << tile << " pixel " << x << " " << y;
       }
   }
+}
+
+// The method, casting every ray (no footprint).
+class CastEveryRay final : public Integrator {
+ public:
+  explicit CastEveryRay(const Integrator& method) : method_(method) {}
+  Rgba integrate(const Ray& ray) const override { return method_.integrate(ray); }
+  void integrate_row(const Ray* rays, int n, Rgba* out) const override { method_.integrate_row(rays, n, out); }
+  std::string_view name() const override { return method_.name(); }
+
+ private:
+  const Integrator& method_;
+};
+
+// The renderer casts only the rays that may meet a method's footprint (the
+// volume's box; with skipping the box of the non-empty macro cells) and
+// leaves the other pixels at zero: the same bytes as casting every ray, for
+// every grid method, with and without skipping and termination, lit and
+// unlit, seen from around the volume in perspective and in parallel.
+// The data is one ball near a corner of an uneven grid, so the non-empty
+// box is a small part of the volume's and many rays pass between the two.
+TEST(Renderer, FootprintCullingKeepsTheBytes) {
+  const Vec3 centre{30, 27, 34};
+  const auto volume = test::volume_from(
+      {40, 36, 44},
+      [&](double x, double y, double z) {
+        const Vec3 d = Vec3{x, y, z} - centre;
+        return std::max(0.0, 1 - std::sqrt(dot(d, d)) / 7);
+      },
+      {1, 1.25, 0.8}, {3, -2, 1});
+  const TransferFunction tf({{0, 0, 0, 0, 0}, {0.3, 0.2, 0.5, 1, 0}, {0.6, 1, 0.6, 0.2, 0.8}, {1, 1, 1, 1, 3}});
+  MethodSpec methods[] = {{.name = "riemann", .step = 0.7}, {.name = "preint1", .step = 0.9},
+                          {.name = "preint2", .step = 1.1}, {.name = "preint2-dual"},
+                          {.name = "exact", .tolerance = 1e-4}, {.name = "adaptive", .tolerance = 1e-3},
+                          {.name = "adaptive", .tolerance = 1e-3, .strategy = "guaranteed"}};
+  for (MethodSpec& m : methods) m.table_size = 64, m.table_size_given = true, m.iterations = 4;
+  int views = 0, culled_more = 0;
+  for (const bool lit : {false, true})
+    for (const FastPath fast : {FastPath{.skip_empty = false}, FastPath{}, FastPath{.termination = 0.05}})
+      for (MethodSpec spec : methods) {
+        const bool grid_walk = spec.name == "exact" || spec.name == "adaptive";
+        if ((grid_walk && (lit || fast.termination > 0)) || (spec.name == "preint2-dual" && lit)) continue;
+        spec.fast = fast;
+        const Lighting lighting{.enabled = lit};
+        const auto method = make_integrator(spec, volume, tf, lighting);
+        for (int view = 0; view < 4; ++view) {
+          CameraSpec cam;
+          const double a = 1.1 + 1.7 * view;
+          cam.target = {25, 20, 20};
+          cam.eye = cam.target + Vec3{90 * std::cos(a), 90 * std::sin(a), 40.0 * (view - 1.5)};
+          cam.up = {0, 0, 1};
+          cam.width = 44, cam.height = 34;
+          if (view % 2) cam.projection = Projection::Orthographic, cam.ortho_height = 70;
+          const Camera camera(cam);
+          const Image culled = render(camera, *method, {.threads = 2, .tile_size = 9});
+          const Image all = render(camera, CastEveryRay(*method), {.threads = 2, .tile_size = 9});
+          const std::string what = spec.name + (spec.name == "adaptive" ? " " + spec.strategy : "") + (lit ? " lit" : "") + " skip " +
+                                   std::to_string(fast.skip_empty) + " termination " +
+                                   std::to_string(fast.termination) + " view " + std::to_string(view);
+          ASSERT_EQ(0, std::memcmp(culled.data().data(), all.data().data(), all.data().size() * sizeof(float)))
+              << what;
+          float alpha = 0;
+          for (int i = 3; i < int(all.data().size()); i += 4) alpha += all.data()[i];
+          ASSERT_GT(alpha, 5) << what << ": the ball must be in view";
+          // The footprint leaves out pixels whose rays would meet the volume's box.
+          const auto box = method->footprint();
+          ASSERT_TRUE(box) << what;
+          const ScreenFootprint small(camera, *box), whole(camera, volume.whole_box());
+          for (int y = 0; y < cam.height; y += 2) {
+            const auto s = small.rows(y, y + 2), w = whole.rows(y, y + 2);
+            culled_more += std::max(0, s.x0 - w.x0) + std::max(0, w.x1 - s.x1);
+          }
+          ++views;
+        }
+      }
+  EXPECT_GT(views, 100);
+  EXPECT_GT(culled_more, 1000) << "skipping's footprint must be smaller than the volume's box";
 }
 
 TEST(Renderer, ABlobLandsOnThePredictedPixel) {

@@ -40,6 +40,11 @@ inline Interval owned_part(const Interval& iv) {
   return {iv.t0 > iv.own0 ? iv.t0 : iv.own0, iv.t1 < iv.own1 ? iv.t1 : iv.own1};
 }
 
+// An axis-aligned box, the closed set [lo, hi].
+struct Box {
+  Vec3 lo, hi;
+};
+
 // The part of the ray inside the closed box [lo, hi] with t >= 0, if any.
 // A ray running exactly along a face is inside (SPEC §1).
 std::optional<Interval> clip_to_box(const Ray& ray, Vec3 lo, Vec3 hi);

@@ -54,6 +54,7 @@ class AdaptiveSimpsonIntegrator final : public ErrorEstimatingIntegrator {
                             const FastPath& fast = {});
   using ErrorEstimatingIntegrator::integrate;
   Rgba integrate(const Ray& ray, RayStats& stats) const override;
+  std::optional<Box> footprint() const override { return volume_.whole_box(); }
   std::string_view name() const override { return "adaptive"; }
 
  private:

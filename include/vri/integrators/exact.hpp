@@ -36,6 +36,7 @@ class ExactIntegrator final : public Integrator {
                   const Lighting& lighting = {});
   ~ExactIntegrator() override;
   Rgba integrate(const Ray& ray) const override;
+  std::optional<Box> footprint() const override { return volume_.whole_box(); }
   std::string_view name() const override { return "exact"; }
 
   using Accumulator = PieceIntegrator::Accumulator;

@@ -56,6 +56,11 @@ class Skipping {
   const EmptySpace* space() const { return space_ ? &*space_ : nullptr; }
   const ZeroOpacity* zero() const { return zero_ ? &*zero_ : nullptr; }  // null without skipping
   double termination() const { return termination_; }
+  // Integrator::footprint of a method that skips this way: with skipping,
+  // the box of the non-empty macro cells (a ray that misses it leaps to its
+  // end from its first sample, or reads only zero entries: it adds exactly
+  // nothing), else the volume's.
+  Box footprint(const GridVolume& volume) const { return space_ ? space_->occupied_box() : volume.whole_box(); }
 
  private:
   std::unique_ptr<MacroCells> cells_;

@@ -45,6 +45,10 @@ class EmptySpace {
   const MacroCells& cells() const { return cells_; }
   bool empty(std::size_t index) const { return empty_[index] != 0; }
   std::size_t empty_count() const;
+  // The box of the non-empty macro cells in world space, within the
+  // volume's: a ray that misses it crosses only empty macro cells (a point
+  // at the volume's origin where every cell is empty).
+  Box occupied_box() const;
 
   // A run of empty (or of non-empty) macro cells along a ray, which ends at
   // t_end, where the ray enters a cell of the other kind, or at t_max.

@@ -121,6 +121,8 @@ class GridVolume {
   // The whole grid's box (this volume's own unless a part).
   Vec3 whole_lo() const;
   Vec3 whole_hi() const;
+  // The box rays are clipped to (clip): every grid method's footprint.
+  Box whole_box() const { return {whole_lo(), whole_hi()}; }
   // The ray clipped to the whole grid's box with the part this volume owns;
   // nullopt where it misses the box or owns none of it.
   std::optional<Interval> clip(const Ray& ray) const;

@@ -1,0 +1,40 @@
+#pragma once
+// ScreenFootprint: the pixels whose rays may meet a box, row by row, so that
+// the renderer casts no ray that is known to miss a method's footprint
+// (Integrator::footprint). VTK's ray casters do the same with the
+// projected volume's row bounds (vtkFixedPointVolumeRayCastMapper).
+//
+// A convex box in front of the eye is seen inside the convex hull of its 8
+// corners' projections (Camera::project); a pixel is kept where its centre
+// lies within a pixel of that hull, a margin far above the rounding of the
+// rays and of the clipping. Where a corner lies at or behind the eye's plane
+// (or projects to no finite point) every pixel is kept: a perspective eye
+// inside the box, or an orthographic image plane through it.
+#include <array>
+#include <vector>
+
+#include "vri/camera/camera.hpp"
+#include "vri/core/ray.hpp"
+
+namespace vri {
+
+class ScreenFootprint {
+ public:
+  ScreenFootprint(const Camera& camera, const Box& box);
+  // The whole image.
+  explicit ScreenFootprint(const Camera& camera);
+
+  // The pixels x0 <= x < x1 of the rows y0 <= y < y1 (x0 >= x1: none) that
+  // may see the box.
+  struct Span {
+    int x0, x1;
+  };
+  Span rows(int y0, int y1) const;
+
+ private:
+  int width_, height_;
+  bool all_ = true;
+  std::vector<std::array<double, 2>> hull_;  // counter-clockwise, in continuous pixel coordinates
+};
+
+}  // namespace vri
