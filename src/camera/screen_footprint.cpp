@@ -35,22 +35,55 @@ std::vector<Point> convex_hull(std::vector<Point> p) {
 
 constexpr double kMargin = 1;  // pixels
 
-}  // namespace
-
-ScreenFootprint::ScreenFootprint(const Camera& camera) : width_(camera.width()), height_(camera.height()) {}
-
-ScreenFootprint::ScreenFootprint(const Camera& camera, const Box& box) : ScreenFootprint(camera) {
-  std::vector<Point> corners;
+// The projections of the box's corners; false where one lies at or behind
+// the eye's plane or projects to no finite point.
+bool project_corners(const Camera& camera, const Box& box, std::vector<Point>& corners) {
+  corners.clear();
   const Vec3 eye = camera.spec().eye, view = camera.spec().target - eye;
   for (int c = 0; c < 8; ++c) {
     const Vec3 corner{c & 1 ? box.hi.x : box.lo.x, c & 2 ? box.hi.y : box.lo.y, c & 4 ? box.hi.z : box.lo.z};
     const auto p = camera.project(corner);
-    if (!(dot(corner - eye, view) > 0) || !p || !std::isfinite(p->first) || !std::isfinite(p->second))
-      return;  // every pixel
+    if (!(dot(corner - eye, view) > 0) || !p || !std::isfinite(p->first) || !std::isfinite(p->second)) return false;
     corners.push_back({p->first, p->second});
   }
-  hull_ = convex_hull(std::move(corners));
+  return true;
+}
+
+}  // namespace
+
+ScreenFootprint::ScreenFootprint(const Camera& camera) : width_(camera.width()), height_(camera.height()) {}
+
+ScreenFootprint::ScreenFootprint(const Camera& camera, const Footprint& footprint) : ScreenFootprint(camera) {
+  std::vector<Point> corners;
+  if (!project_corners(camera, footprint.bounds, corners)) return;  // every pixel
+  hull_ = convex_hull(corners);
   all_ = false;
+  if (footprint.parts.empty()) return;
+  blocks_x_ = (width_ + 3) / 4;
+  const int blocks_y = (height_ + 1) / 2;
+  std::vector<unsigned char> blocks(std::size_t(blocks_x_) * blocks_y, 0);
+  for (const Box& part : footprint.parts) {
+    if (!project_corners(camera, part, corners)) return;  // every block
+    double lo[2] = {corners[0][0], corners[0][1]}, hi[2] = {lo[0], lo[1]};
+    for (const Point& p : corners)
+      for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+    // The pixels whose centres lie within the margin of the rectangle, as blocks.
+    const auto first = [](double v, int n) { return static_cast<int>(std::clamp(std::ceil(v - kMargin - 0.5), 0.0, double(n))); };
+    const auto last = [](double v, int n) { return static_cast<int>(std::clamp(std::floor(v + kMargin - 0.5), -1.0, double(n - 1))); };
+    const int x0 = first(lo[0], width_), x1 = last(hi[0], width_), y0 = first(lo[1], height_), y1 = last(hi[1], height_);
+    if (x0 > x1 || y0 > y1) continue;
+    for (int by = y0 / 2; by <= y1 / 2; ++by)
+      std::fill_n(blocks.begin() + std::ptrdiff_t(by) * blocks_x_ + x0 / 4, x1 / 4 - x0 / 4 + 1, 1);
+  }
+  blocks_ = std::move(blocks);
+}
+
+bool ScreenFootprint::sees(int x0, int x1, int y0, int y1) const {
+  if (blocks_.empty()) return true;
+  for (int by = y0 / 2; by <= (y1 - 1) / 2; ++by)
+    for (int bx = x0 / 4; bx <= (x1 - 1) / 4; ++bx)
+      if (blocks_[std::size_t(by) * blocks_x_ + bx]) return true;
+  return false;
 }
 
 ScreenFootprint::Span ScreenFootprint::rows(int y0, int y1) const {

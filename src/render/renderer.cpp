@@ -23,7 +23,7 @@ Image render(const Camera& camera, const Integrator& integrator, const RenderOpt
   const int tiles = tiles_x * tiles_y;
   // Only the pixels whose rays may meet the method's footprint are cast; the
   // others keep the image's zeros, what their rays would give.
-  const auto footprint = integrator.footprint();
+  const Footprint* footprint = integrator.footprint();
   const ScreenFootprint seen = footprint ? ScreenFootprint(camera, *footprint) : ScreenFootprint(camera);
   std::atomic<int> done{0};
   auto render_tiles = [&](const tbb::blocked_range<int>& range) {
@@ -44,12 +44,14 @@ Image render(const Camera& camera, const Integrator& integrator, const RenderOpt
         const ScreenFootprint::Span span = seen.rows(y, std::min(y1, y + 2));
         const int bx1 = std::min(x1, span.x1);
         int n = 0;
-        for (int bx = x0 + std::max(0, (span.x0 - x0) / 4 * 4); bx < bx1; bx += 4)
+        for (int bx = x0 + std::max(0, (span.x0 - x0) / 4 * 4); bx < bx1; bx += 4) {
+          if (!seen.sees(bx, std::min(x1, bx + 4), y, std::min(y1, y + 2))) continue;
           for (int py = y; py < std::min(y1, y + 2); ++py)
             for (int px = bx; px < std::min(x1, bx + 4); ++px) {
               pixel[n] = {px, py};
               rays[n++] = camera.ray(px, py);
             }
+        }
         if (n == 0) continue;
         integrator.integrate_row(rays.data(), n, out.data());
         for (int i = 0; i < n; ++i) image.set(pixel[i][0], pixel[i][1], out[i]);

@@ -80,6 +80,40 @@ Box EmptySpace::occupied_box() const {
   return box;
 }
 
+std::vector<Box> EmptySpace::occupied_parts() const {
+  const GridVolume& v = cells_.volume();
+  const auto& m = cells_.dims();
+  int f = 1;  // macro cells a block side
+  const auto blocks = [&](int a) { return (m[a] + f - 1) / f; };
+  while (std::size_t(blocks(0)) * blocks(1) * blocks(2) > 4096) f *= 2;
+  const Box bounds = occupied_box();
+  const auto face = [&](int a, int cell) {
+    return std::clamp(v.origin()[a] + std::min(cell, m[a]) * (MacroCells::kCells * v.spacing()[a]), bounds.lo[a],
+                      bounds.hi[a]);
+  };
+  const auto occupied = [&](int bx, int by, int bz) {
+    for (int k = bz * f; k < std::min(m[2], (bz + 1) * f); ++k)
+      for (int j = by * f; j < std::min(m[1], (by + 1) * f); ++j)
+        for (int i = bx * f; i < std::min(m[0], (bx + 1) * f); ++i)
+          if (!empty(cells_.index(i, j, k))) return true;
+    return false;
+  };
+  std::vector<Box> parts;
+  for (int bz = 0; bz < blocks(2); ++bz)
+    for (int by = 0; by < blocks(1); ++by)
+      for (int bx = 0; bx < blocks(0);) {
+        if (!occupied(bx, by, bz)) {
+          ++bx;
+          continue;
+        }
+        const int first = bx;
+        while (bx < blocks(0) && occupied(bx, by, bz)) ++bx;
+        parts.push_back({{face(0, first * f), face(1, by * f), face(2, bz * f)},
+                         {face(0, bx * f), face(1, (by + 1) * f), face(2, (bz + 1) * f)}});
+      }
+  return parts;
+}
+
 std::size_t EmptySpace::empty_count() const {
   return static_cast<std::size_t>(std::count(empty_.begin(), empty_.end(), std::uint8_t{1}));
 }

@@ -10,21 +10,26 @@
 namespace vri {
 namespace {
 
-// Which pixels' rays meet the box (clip_to_box, as GridVolume::clip), and
-// which pixels the footprint keeps, row pair by row pair as the renderer asks.
+// Which pixels' rays meet the footprint (clip_to_box, as GridVolume::clip,
+// on its parts or else its bounds), and which pixels ScreenFootprint keeps,
+// row pair by row pair and block by block as the renderer asks.
 struct Coverage {
   std::vector<char> hit, kept;
 };
-Coverage coverage(const Camera& camera, const Box& box) {
+Coverage coverage(const Camera& camera, const Footprint& footprint) {
   const int W = camera.width(), H = camera.height();
-  const ScreenFootprint seen(camera, box);
+  const ScreenFootprint seen(camera, footprint);
+  const std::vector<Box> boxes = footprint.parts.empty() ? std::vector<Box>{footprint.bounds} : footprint.parts;
   Coverage c{std::vector<char>(std::size_t(W) * H), std::vector<char>(std::size_t(W) * H)};
   for (int y = 0; y < H; y += 2) {
-    const ScreenFootprint::Span span = seen.rows(y, std::min(H, y + 2));
-    for (int py = y; py < std::min(H, y + 2); ++py)
+    const int y1 = std::min(H, y + 2);
+    const ScreenFootprint::Span span = seen.rows(y, y1);
+    for (int py = y; py < y1; ++py)
       for (int x = 0; x < W; ++x) {
-        c.hit[std::size_t(py) * W + x] = clip_to_box(camera.ray(x, py), box.lo, box.hi).has_value();
-        c.kept[std::size_t(py) * W + x] = x >= span.x0 && x < span.x1;
+        const Ray ray = camera.ray(x, py);
+        for (const Box& b : boxes) c.hit[std::size_t(py) * W + x] |= clip_to_box(ray, b.lo, b.hi).has_value();
+        const int bx = x / 4 * 4;  // its block of 4 x 2 pixels, as the renderer's 16-pixel tiles make them
+        c.kept[std::size_t(py) * W + x] = x >= span.x0 && x < span.x1 && seen.sees(bx, std::min(W, bx + 4), y, y1);
       }
   }
   return c;
@@ -59,7 +64,7 @@ TEST(ScreenFootprint, KeepsEveryPixelWhoseRayMeetsTheBoxAndLittleElse) {
         continue;
     }
     const Camera camera(spec);
-    const Coverage cov = coverage(camera, box);
+    const Coverage cov = coverage(camera, Footprint{box, {}});
     const int W = spec.width, H = spec.height;
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x) {
@@ -83,6 +88,32 @@ TEST(ScreenFootprint, KeepsEveryPixelWhoseRayMeetsTheBoxAndLittleElse) {
   EXPECT_GT(culled, 100000);  // and cull most of the others (the boxes are small in the image)
 }
 
+// A footprint of parts (EmptySpace::occupied_parts: runs of non-empty macro
+// cells) keeps every pixel whose ray meets a part, and none of the many
+// whose rays pass between two parts far apart, which its bounds keep.
+TEST(ScreenFootprint, PartsLeaveOutThePixelsBetweenThem) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  long long between = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    CameraSpec spec;
+    spec.width = 64, spec.height = 48;
+    spec.eye = {30 * u(rng), 30 * u(rng), 40 + 5 * u(rng)};
+    spec.target = {0, 0, 0};
+    spec.fov_y = 40;
+    if (trial % 2) spec.projection = Projection::Orthographic, spec.ortho_height = 16;
+    const Box a{{-6, -6, -2}, {-4, -3, 1}}, b{{3.5, 4, -1}, {6, 6, 2}};
+    const Footprint parts{{{-6, -6, -2}, {6, 6, 2}}, {a, b}};
+    const Camera camera(spec);
+    const Coverage with = coverage(camera, parts), bounds = coverage(camera, Footprint{parts.bounds, {}});
+    for (std::size_t i = 0; i < with.hit.size(); ++i) {
+      ASSERT_TRUE(!with.hit[i] || with.kept[i]) << "trial " << trial << " pixel " << i;
+      between += bounds.kept[i] && !with.kept[i];
+    }
+  }
+  EXPECT_GT(between, 10000);
+}
+
 // Where a corner lies at or behind the eye (the eye inside the box, or the
 // box straddling the eye's plane), every pixel is kept.
 TEST(ScreenFootprint, KeepsEveryPixelWhereTheBoxReachesBehindTheEye) {
@@ -94,12 +125,12 @@ TEST(ScreenFootprint, KeepsEveryPixelWhereTheBoxReachesBehindTheEye) {
   const Camera camera(spec);
   for (const Box& box : {Box{{-1, -1, -1}, {1, 1, 1}}, Box{{5, 5, -3}, {6, 6, 2}}})
     for (int y = 0; y < 20; y += 2) {
-      const auto span = ScreenFootprint(camera, box).rows(y, y + 2);
+      const auto span = ScreenFootprint(camera, Footprint{box, {}}).rows(y, y + 2);
       EXPECT_EQ(span.x0, 0);
       EXPECT_EQ(span.x1, 30);
     }
   // A box behind the eye is not culled either (only kept): the rays miss it anyway.
-  const auto behind = ScreenFootprint(camera, Box{{-1, -1, 2}, {1, 1, 3}}).rows(0, 2);
+  const auto behind = ScreenFootprint(camera, Footprint{Box{{-1, -1, 2}, {1, 1, 3}}, {}}).rows(0, 2);
   EXPECT_EQ(behind.x1 - behind.x0, 30);
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -237,6 +238,68 @@ TEST(EmptySpace, RunsEndAtTheFacesOfNonEmptyCells) {
   EXPECT_FALSE(d.empty);
   EXPECT_DOUBLE_EQ(d.t_end, 40);  // leaves the macro grid at x = 32 (t = 33) still non-empty: t_max
   EXPECT_FALSE(from_inside.next(d));
+}
+
+// occupied_box holds every non-empty macro cell and occupied_parts covers
+// each of them, inside the box, with boxes that hold no more than runs of
+// non-empty cells along x (or, past 4096 macro cells, of blocks of 2 a
+// side): scattered points on grids of 5^3 to 40^3 macro cells, uneven
+// spacing and origin. (The renderer casts no ray that misses the parts.)
+TEST(EmptySpace, OccupiedPartsCoverEveryNonEmptyCellAndLittleElse) {
+  const TransferFunction tf = hat();
+  std::mt19937 rng(5);
+  for (const int n : {33, 41, 100, 321}) {
+    std::uniform_int_distribution<int> at(0, n - 1);
+    std::vector<std::array<int, 3>> points(6);
+    for (auto& p : points) p = {at(rng), at(rng), at(rng) % 40};
+    const GridVolume volume = test::volume_from(
+        {n, n, 40},
+        [&](double x, double y, double z) {  // world positions: back to grid points
+          const std::array<long, 3> g{std::lround((x + 3) / 0.5), std::lround((y - 7) / 1.25), std::lround((z - 1) / 2)};
+          for (const auto& p : points)
+            if (g[0] == p[0] && g[1] == p[1] && g[2] == p[2]) return 50.0;
+          return 0.0;
+        },
+        {0.5, 1.25, 2}, {-3, 7, 1});
+    const MacroCells cells(volume);
+    const EmptySpace space(cells, ZeroOpacity(tf));
+    const Box box = space.occupied_box();
+    const std::vector<Box> parts = space.occupied_parts();
+    const auto& m = cells.dims();
+    const bool blocks = std::size_t(m[0]) * m[1] * m[2] > 4096;
+    const auto inside = [](const Box& in, const Box& out) {
+      for (int a = 0; a < 3; ++a)
+        if (in.lo[a] < out.lo[a] || in.hi[a] > out.hi[a]) return false;
+      return true;
+    };
+    double part_volume = 0;
+    for (const Box& part : parts) {
+      EXPECT_TRUE(inside(part, box)) << n;
+      part_volume += (part.hi.x - part.lo.x) * (part.hi.y - part.lo.y) * (part.hi.z - part.lo.z);
+    }
+    int non_empty = 0;
+    for (int k = 0; k < m[2]; ++k)
+      for (int j = 0; j < m[1]; ++j)
+        for (int i = 0; i < m[0]; ++i) {
+          if (space.empty(cells.index(i, j, k))) continue;
+          ++non_empty;
+          Box cell;  // the macro cell's box, within the volume's
+          const std::array<int, 3> c{i, j, k};
+          for (int a = 0; a < 3; ++a) {
+            const double side = MacroCells::kCells * volume.spacing()[a];
+            cell.lo[a] = std::min(volume.origin()[a] + c[a] * side, volume.whole_hi()[a]);
+            cell.hi[a] = std::min(volume.origin()[a] + (c[a] + 1) * side, volume.whole_hi()[a]);
+          }
+          EXPECT_TRUE(inside(cell, box)) << n << " cell " << i << " " << j << " " << k;
+          EXPECT_TRUE(std::any_of(parts.begin(), parts.end(), [&](const Box& p) { return inside(cell, p); }))
+              << n << " cell " << i << " " << j << " " << k;
+        }
+    ASSERT_GT(non_empty, 0);
+    // The parts hold the non-empty cells' volume, a little more where cells
+    // are merged into blocks; far less than the box.
+    const double cell_volume = 512 * volume.spacing().x * volume.spacing().y * volume.spacing().z;
+    EXPECT_LE(part_volume, non_empty * cell_volume * (blocks ? 8 : 1) + 1e-9) << n;
+  }
 }
 
 // for_each_occupied_run hands out the non-empty runs in order, and they and

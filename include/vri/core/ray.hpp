@@ -2,6 +2,7 @@
 // Ray: x(t) = origin + t * dir with |dir| = 1, so t is world distance (SPEC §4).
 #include <limits>
 #include <optional>
+#include <vector>
 
 #include "vri/core/vec3.hpp"
 
@@ -43,6 +44,14 @@ inline Interval owned_part(const Interval& iv) {
 // An axis-aligned box, the closed set [lo, hi].
 struct Box {
   Vec3 lo, hi;
+};
+
+// Where a method sees anything (Integrator::footprint): a ray that meets
+// none of `parts` (none of `bounds` when there are no parts) integrates to
+// exactly {0, 0, 0, 0}. Every part lies in `bounds`.
+struct Footprint {
+  Box bounds;
+  std::vector<Box> parts;
 };
 
 // The part of the ray inside the closed box [lo, hi] with t >= 0, if any.

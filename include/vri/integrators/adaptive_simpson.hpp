@@ -54,7 +54,7 @@ class AdaptiveSimpsonIntegrator final : public ErrorEstimatingIntegrator {
                             const FastPath& fast = {});
   using ErrorEstimatingIntegrator::integrate;
   Rgba integrate(const Ray& ray, RayStats& stats) const override;
-  std::optional<Box> footprint() const override { return volume_.whole_box(); }
+  const Footprint* footprint() const override { return &skipping_.footprint(); }
   std::string_view name() const override { return "adaptive"; }
 
  private:

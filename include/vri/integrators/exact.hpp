@@ -36,7 +36,7 @@ class ExactIntegrator final : public Integrator {
                   const Lighting& lighting = {});
   ~ExactIntegrator() override;
   Rgba integrate(const Ray& ray) const override;
-  std::optional<Box> footprint() const override { return volume_.whole_box(); }
+  const Footprint* footprint() const override { return &footprint_; }
   std::string_view name() const override { return "exact"; }
 
   using Accumulator = PieceIntegrator::Accumulator;
@@ -46,6 +46,7 @@ class ExactIntegrator final : public Integrator {
 
  private:
   const GridVolume& volume_;
+  const Footprint footprint_{volume_.whole_box(), {}};  // the volume's box
   double tolerance_;
   std::optional<HeadlightShader> shader_;
   PieceIntegrator pieces_;

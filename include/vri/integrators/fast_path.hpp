@@ -57,15 +57,16 @@ class Skipping {
   const ZeroOpacity* zero() const { return zero_ ? &*zero_ : nullptr; }  // null without skipping
   double termination() const { return termination_; }
   // Integrator::footprint of a method that skips this way: with skipping,
-  // the box of the non-empty macro cells (a ray that misses it leaps to its
-  // end from its first sample, or reads only zero entries: it adds exactly
-  // nothing), else the volume's.
-  Box footprint(const GridVolume& volume) const { return space_ ? space_->occupied_box() : volume.whole_box(); }
+  // the non-empty macro cells (EmptySpace::occupied_parts; a ray that meets
+  // none leaps to its end from its first sample, or reads only zero
+  // entries: it adds exactly nothing), else the volume's box.
+  const Footprint& footprint() const { return footprint_; }
 
  private:
   std::unique_ptr<MacroCells> cells_;
   std::optional<ZeroOpacity> zero_;
   std::optional<EmptySpace> space_;
+  Footprint footprint_;
   double termination_;
 };
 

@@ -3,7 +3,6 @@
 // along one ray. Every method in vri is one class behind this interface; the
 // renderer calls integrate() concurrently from several threads, so it is const
 // and keeps no mutable state.
-#include <optional>
 #include <string_view>
 
 #include "vri/core/ray.hpp"
@@ -23,11 +22,11 @@ class Integrator {
   virtual void integrate_row(const Ray* rays, int n, Rgba* out) const {
     for (int i = 0; i < n; ++i) out[i] = integrate(rays[i]);
   }
-  // A box outside which the method sees nothing: a ray that misses it
+  // Where the method sees anything: a ray that misses the footprint
   // integrates to exactly {0, 0, 0, 0}, the value an image starts with, so
   // the renderer need not cast it (as VTK's ray casters cast only inside
-  // the volume's projected bounds). nullopt (the default): every ray is cast.
-  virtual std::optional<Box> footprint() const { return std::nullopt; }
+  // the volume's projected bounds). Null (the default): every ray is cast.
+  virtual const Footprint* footprint() const { return nullptr; }
   virtual std::string_view name() const = 0;
 };
 

@@ -69,7 +69,7 @@ class Preint2DualIntegrator final : public Integrator {
   ~Preint2DualIntegrator() override;
   Rgba integrate(const Ray& ray) const override;
   void integrate_row(const Ray* rays, int n, Rgba* out) const override;
-  std::optional<Box> footprint() const override { return fast_.footprint(volume_); }
+  const Footprint* footprint() const override { return &fast_.footprint(); }
   std::string_view name() const override { return "preint2-dual"; }
 
   // The unweighted table (the weighted tables' `full` when interpolated).

@@ -49,7 +49,7 @@ class RiemannIntegrator final : public Integrator {
   // On the float path, on a CPU with AVX2: packets of 8 neighbouring
   // rays (float_packet.hpp), the same bytes as integrate.
   void integrate_row(const Ray* rays, int n, Rgba* out) const override;
-  std::optional<Box> footprint() const override { return fast_.footprint(volume_); }
+  const Footprint* footprint() const override { return &fast_.footprint(); }
   std::string_view name() const override { return "riemann"; }
 
  private:

@@ -49,6 +49,10 @@ class EmptySpace {
   // volume's: a ray that misses it crosses only empty macro cells (a point
   // at the volume's origin where every cell is empty).
   Box occupied_box() const;
+  // Boxes that hold every non-empty macro cell, within occupied_box(): runs
+  // of them along x, over blocks of 2^k macro cells a side where there are
+  // more than 4096 macro cells (the renderer projects each box per frame).
+  std::vector<Box> occupied_parts() const;
 
   // A run of empty (or of non-empty) macro cells along a ray, which ends at
   // t_end, where the ray enters a cell of the other kind, or at t_max.
