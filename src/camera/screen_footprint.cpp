@@ -68,9 +68,14 @@ ScreenFootprint::ScreenFootprint(const Camera& camera, const Footprint& footprin
     for (const Point& p : corners)
       for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
     // The pixels whose centres lie within the margin of the rectangle, as blocks.
-    const auto first = [](double v, int n) { return static_cast<int>(std::clamp(std::ceil(v - kMargin - 0.5), 0.0, double(n))); };
-    const auto last = [](double v, int n) { return static_cast<int>(std::clamp(std::floor(v + kMargin - 0.5), -1.0, double(n - 1))); };
-    const int x0 = first(lo[0], width_), x1 = last(hi[0], width_), y0 = first(lo[1], height_), y1 = last(hi[1], height_);
+    const auto first = [](double v, int n) {
+      return static_cast<int>(std::clamp(std::ceil(v - kMargin - 0.5), 0.0, double(n)));
+    };
+    const auto last = [](double v, int n) {
+      return static_cast<int>(std::clamp(std::floor(v + kMargin - 0.5), -1.0, double(n - 1)));
+    };
+    const int x0 = first(lo[0], width_), x1 = last(hi[0], width_);
+    const int y0 = first(lo[1], height_), y1 = last(hi[1], height_);
     if (x0 > x1 || y0 > y1) continue;
     for (int by = y0 / 2; by <= y1 / 2; ++by)
       std::fill_n(blocks.begin() + std::ptrdiff_t(by) * blocks_x_ + x0 / 4, x1 / 4 - x0 / 4 + 1, 1);

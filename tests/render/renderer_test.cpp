@@ -116,7 +116,8 @@ TEST(Renderer, FootprintCullingKeepsTheBytes) {
           const Camera camera(cam);
           const Image culled = render(camera, *method, {.threads = 2, .tile_size = 9});
           const Image all = render(camera, CastEveryRay(*method), {.threads = 2, .tile_size = 9});
-          const std::string what = spec.name + (spec.name == "adaptive" ? " " + spec.strategy : "") + (lit ? " lit" : "") + " skip " +
+          const std::string what = spec.name + (spec.name == "adaptive" ? " " + spec.strategy : "") +
+                                   (lit ? " lit" : "") + " skip " +
                                    std::to_string(fast.skip_empty) + " termination " +
                                    std::to_string(fast.termination) + " view " + std::to_string(view);
           ASSERT_EQ(0, std::memcmp(culled.data().data(), all.data().data(), all.data().size() * sizeof(float)))
@@ -130,8 +131,10 @@ TEST(Renderer, FootprintCullingKeepsTheBytes) {
           const ScreenFootprint small(camera, *footprint), whole(camera, Footprint{volume.whole_box(), {}});
           for (int y = 0; y < cam.height; y += 2) {
             const auto s = small.rows(y, y + 2), w = whole.rows(y, y + 2);
-            for (int x = w.x0; x < w.x1; ++x)
-              culled_more += !(x >= s.x0 && x < s.x1 && small.sees(x / 4 * 4, std::min(cam.width, x / 4 * 4 + 4), y, y + 2));
+            for (int x = w.x0; x < w.x1; ++x) {
+              const int bx = x / 4 * 4;
+              culled_more += !(x >= s.x0 && x < s.x1 && small.sees(bx, std::min(cam.width, bx + 4), y, y + 2));
+            }
           }
           ++views;
         }

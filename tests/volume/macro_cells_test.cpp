@@ -255,7 +255,8 @@ TEST(EmptySpace, OccupiedPartsCoverEveryNonEmptyCellAndLittleElse) {
     const GridVolume volume = test::volume_from(
         {n, n, 40},
         [&](double x, double y, double z) {  // world positions: back to grid points
-          const std::array<long, 3> g{std::lround((x + 3) / 0.5), std::lround((y - 7) / 1.25), std::lround((z - 1) / 2)};
+          const std::array<long, 3> g{std::lround((x + 3) / 0.5), std::lround((y - 7) / 1.25),
+                                      std::lround((z - 1) / 2)};
           for (const auto& p : points)
             if (g[0] == p[0] && g[1] == p[1] && g[2] == p[2]) return 50.0;
           return 0.0;
