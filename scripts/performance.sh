@@ -50,14 +50,18 @@ if want vtk_mesh; then
 fi
 if want vtk_grid; then
   vtk_display
-  # The bundled views, then each dataset turned (issue 21: several cameras
-  # and transfer functions per dataset).
+  # The bundled views, each dataset turned, and the engine and the bonsai
+  # under an opaque ramp and a spike (scripts/views/; issue 21: several
+  # cameras and transfer functions per dataset).
   for view in "neghip" "engine" "bonsai" "neghip_opaque" "neghip_spike" "neghip --azimuth 90" \
-              "engine --azimuth 90 --elevation 30" "bonsai --azimuth 90"; do
+              "engine --azimuth 90 --elevation 30" "bonsai --azimuth 90" \
+              "views/engine_opaque" "views/engine_spike" "views/bonsai_opaque" "views/bonsai_spike"; do
     read -r s motions <<<"$view"
+    scene="scenes/$s.json"
+    [[ "$s" == views/* ]] && scene="scripts/$s.json"
     # shellcheck disable=SC2086
     { stamp; DISPLAY=$display LP_NUM_THREADS=2 /usr/bin/python3 scripts/vtk_grid_side_by_side.py \
-        "scenes/$s.json" 512 "$out/side" --repeat 5 $motions; } >"$out/vtk_grid_$s${motions:+_turned}.txt" 2>&1
+        "$scene" 512 "$out/side" --repeat 5 $motions; } >"$out/vtk_grid_${s#views/}${motions:+_turned}.txt" 2>&1
   done
   # The table of docs/PERFORMANCE.md from the eight files.
   /usr/bin/python3 scripts/vtk_grid_summary.py "$out" >"$out/vtk_grid_summary.md"

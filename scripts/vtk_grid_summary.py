@@ -15,7 +15,8 @@ import glob, os, re, sys
 VIEWS = [("neghip", "neghip"), ("neghip_turned", "neghip, azimuth 90"), ("engine", "engine"),
          ("engine_turned", "engine, azimuth 90, elevation 30"), ("bonsai", "bonsai"),
          ("bonsai_turned", "bonsai, azimuth 90"), ("neghip_opaque", "neghip_opaque"),
-         ("neghip_spike", "neghip_spike")]
+         ("neghip_spike", "neghip_spike"), ("engine_opaque", "engine_opaque"), ("engine_spike", "engine_spike"),
+         ("bonsai_opaque", "bonsai_opaque"), ("bonsai_spike", "bonsai_spike")]
 
 
 def rows(path):
