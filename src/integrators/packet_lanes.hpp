@@ -186,16 +186,6 @@ VRI_AVX2 __m128d pairs(const float* base, int i, int j) {
   return _mm_set_pd(hi, lo);
 }
 
-// The pair (base[i], base[i + 1]) of 1- or 2-byte samples as one integer,
-// base[i] in its low bits (x86 is little-endian); memcpy for the same reason.
-template <class Pair, class T>
-VRI_AVX2 Pair pair(const T* base, int i) {
-  static_assert(sizeof(Pair) == 2 * sizeof(T));
-  Pair p;
-  std::memcpy(&p, base + i, sizeof p);
-  return p;
-}
-
 // The 8 lanes' neighbouring samples base[index[l]] and base[index[l] + 1],
 // in float (exactly, as the scalar path converts them), as vectors lo and hi:
 // each pair of floats read as one 8-byte element, then split.
@@ -204,39 +194,6 @@ VRI_AVX2 void pair8(const float* base, const int* index, __m256& lo, __m256& hi)
   const __m256 b = _mm256_castpd_ps(_mm256_set_m128d(pairs(base, index[6], index[7]), pairs(base, index[4], index[5])));
   lo = order(_mm256_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 2, 0)));
   hi = order(_mm256_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1)));
-}
-
-// 1- and 2-byte samples: each lane's pair in one 32-bit lane, split into
-// base[i] and base[i + 1].
-VRI_AVX2 void pair8(const std::uint8_t* base, const int* index, __m256& lo, __m256& hi) {
-  const __m256i p = _mm256_cvtepu16_epi32(_mm_setr_epi16(
-      static_cast<short>(pair<std::uint16_t>(base, index[0])), static_cast<short>(pair<std::uint16_t>(base, index[1])),
-      static_cast<short>(pair<std::uint16_t>(base, index[2])), static_cast<short>(pair<std::uint16_t>(base, index[3])),
-      static_cast<short>(pair<std::uint16_t>(base, index[4])), static_cast<short>(pair<std::uint16_t>(base, index[5])),
-      static_cast<short>(pair<std::uint16_t>(base, index[6])), static_cast<short>(pair<std::uint16_t>(base, index[7]))));
-  lo = _mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xff)));
-  hi = _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 8));
-}
-
-template <class T>
-VRI_AVX2 __m256i pairs16(const T* base, const int* index) {
-  return _mm256_setr_epi32(
-      static_cast<int>(pair<std::uint32_t>(base, index[0])), static_cast<int>(pair<std::uint32_t>(base, index[1])),
-      static_cast<int>(pair<std::uint32_t>(base, index[2])), static_cast<int>(pair<std::uint32_t>(base, index[3])),
-      static_cast<int>(pair<std::uint32_t>(base, index[4])), static_cast<int>(pair<std::uint32_t>(base, index[5])),
-      static_cast<int>(pair<std::uint32_t>(base, index[6])), static_cast<int>(pair<std::uint32_t>(base, index[7])));
-}
-
-VRI_AVX2 void pair8(const std::uint16_t* base, const int* index, __m256& lo, __m256& hi) {
-  const __m256i p = pairs16(base, index);
-  lo = _mm256_cvtepi32_ps(_mm256_and_si256(p, _mm256_set1_epi32(0xffff)));
-  hi = _mm256_cvtepi32_ps(_mm256_srli_epi32(p, 16));
-}
-
-VRI_AVX2 void pair8(const std::int16_t* base, const int* index, __m256& lo, __m256& hi) {
-  const __m256i p = pairs16(base, index);  // sign-extended by the arithmetic shifts
-  lo = _mm256_cvtepi32_ps(_mm256_srai_epi32(_mm256_slli_epi32(p, 16), 16));
-  hi = _mm256_cvtepi32_ps(_mm256_srai_epi32(p, 16));
 }
 
 // The corner pairs (v[i], v[i + 1]) along x of the 8 lanes' cells at (y, z)

@@ -1,8 +1,8 @@
 #include "vri/render/render_checks.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <span>
 

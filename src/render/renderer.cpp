@@ -40,13 +40,14 @@ Image render(const Camera& camera, const Integrator& integrator, const RenderOpt
       std::vector<Rgba> out(rays.size());
       std::vector<std::array<int, 2>> pixel(rays.size());
       for (int y = y0; y < y1; y += 2) {
+        const int ye = std::min(y1, y + 2);
         // The blocks that reach into the footprint's pixels, on the tile's grid of blocks.
-        const ScreenFootprint::Span span = seen.rows(y, std::min(y1, y + 2));
+        const ScreenFootprint::Span span = seen.rows(y, ye);
         const int bx1 = std::min(x1, span.x1);
         int n = 0;
         for (int bx = x0 + std::max(0, (span.x0 - x0) / 4 * 4); bx < bx1; bx += 4) {
-          if (!seen.sees(bx, std::min(x1, bx + 4), y, std::min(y1, y + 2))) continue;
-          for (int py = y; py < std::min(y1, y + 2); ++py)
+          if (!seen.sees(bx, std::min(x1, bx + 4), y, ye)) continue;
+          for (int py = y; py < ye; ++py)
             for (int px = bx; px < std::min(x1, bx + 4); ++px) {
               pixel[n] = {px, py};
               rays[n++] = camera.ray(px, py);

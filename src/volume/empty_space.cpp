@@ -67,29 +67,31 @@ bool EmptySpace::occupied_span(const Ray& ray, Face&& face, double& b0, double& 
   return b0 <= b1;
 }
 
+double EmptySpace::macro_face(int axis, int cell) const {
+  const GridVolume& v = cells_.volume();
+  return v.origin()[axis] + cell * (MacroCells::kCells * v.spacing()[axis]);
+}
+
 Box EmptySpace::occupied_box() const {
   const GridVolume& v = cells_.volume();
   if (!(box_lo_[0] < box_hi_[0])) return {v.origin(), v.origin()};
   const Vec3 lo = v.whole_lo(), hi = v.whole_hi();
   Box box;
   for (int a = 0; a < 3; ++a) {
-    const double cell = MacroCells::kCells * v.spacing()[a];
-    box.lo[a] = std::clamp(v.origin()[a] + box_lo_[a] * cell, lo[a], hi[a]);
-    box.hi[a] = std::clamp(v.origin()[a] + box_hi_[a] * cell, lo[a], hi[a]);
+    box.lo[a] = std::clamp(macro_face(a, box_lo_[a]), lo[a], hi[a]);
+    box.hi[a] = std::clamp(macro_face(a, box_hi_[a]), lo[a], hi[a]);
   }
   return box;
 }
 
 std::vector<Box> EmptySpace::occupied_parts() const {
-  const GridVolume& v = cells_.volume();
   const auto& m = cells_.dims();
   int f = 1;  // macro cells a block side
   const auto blocks = [&](int a) { return (m[a] + f - 1) / f; };
   while (std::size_t(blocks(0)) * blocks(1) * blocks(2) > 4096) f *= 2;
   const Box bounds = occupied_box();
-  const auto face = [&](int a, int cell) {
-    return std::clamp(v.origin()[a] + std::min(cell, m[a]) * (MacroCells::kCells * v.spacing()[a]), bounds.lo[a],
-                      bounds.hi[a]);
+  const auto face = [&](int a, int block) {
+    return std::clamp(macro_face(a, std::min(block * f, m[a])), bounds.lo[a], bounds.hi[a]);
   };
   const auto occupied = [&](int bx, int by, int bz) {
     for (int k = bz * f; k < std::min(m[2], (bz + 1) * f); ++k)
@@ -101,15 +103,11 @@ std::vector<Box> EmptySpace::occupied_parts() const {
   std::vector<Box> parts;
   for (int bz = 0; bz < blocks(2); ++bz)
     for (int by = 0; by < blocks(1); ++by)
-      for (int bx = 0; bx < blocks(0);) {
-        if (!occupied(bx, by, bz)) {
-          ++bx;
-          continue;
-        }
-        const int first = bx;
-        while (bx < blocks(0) && occupied(bx, by, bz)) ++bx;
-        parts.push_back({{face(0, first * f), face(1, by * f), face(2, bz * f)},
-                         {face(0, bx * f), face(1, (by + 1) * f), face(2, (bz + 1) * f)}});
+      for (int bx = 0; bx < blocks(0); ++bx) {
+        if (!occupied(bx, by, bz)) continue;
+        const int first = bx;  // a run of occupied blocks along x: first .. bx
+        while (bx + 1 < blocks(0) && occupied(bx + 1, by, bz)) ++bx;
+        parts.push_back({{face(0, first), face(1, by), face(2, bz)}, {face(0, bx + 1), face(1, by + 1), face(2, bz + 1)}});
       }
   return parts;
 }
@@ -120,9 +118,7 @@ std::size_t EmptySpace::empty_count() const {
 
 double EmptySpace::Walk::exit(int a, int cell) const {
   if (step_[a] == 0) return std::numeric_limits<double>::infinity();
-  const GridVolume& v = space_.cells_.volume();
-  const double face = v.origin()[a] + (cell + (step_[a] > 0 ? 1 : 0)) * (MacroCells::kCells * v.spacing()[a]);
-  return (face - ray_.origin[a]) * inverse_[a];
+  return (space_.macro_face(a, cell + (step_[a] > 0 ? 1 : 0)) - ray_.origin[a]) * inverse_[a];
 }
 
 EmptySpace::Walk::Walk(const EmptySpace& space, const Ray& ray, double t, double t_max)
@@ -135,7 +131,7 @@ EmptySpace::Walk::Walk(const EmptySpace& space, const Ray& ray, double t, double
   // run is empty, after it too.
   const GridVolume& v = space.cells_.volume();
   const auto face = [&](int a, int f) {
-    return (v.origin()[a] + f * (MacroCells::kCells * v.spacing()[a]) - ray.origin[a]) * inverse_[a];
+    return (space.macro_face(a, f) - ray.origin[a]) * inverse_[a];
   };
   double b0 = -std::numeric_limits<double>::infinity(), b1 = std::numeric_limits<double>::infinity();
   if (!space.whole_ && (!space.occupied_span(ray, face, b0, b1) || t >= b1 || b0 >= t_max)) {

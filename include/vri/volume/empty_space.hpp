@@ -93,6 +93,8 @@ class EmptySpace {
   // formula); false when it misses the box or there is none.
   template <class Face>
   bool occupied_span(const Ray& ray, Face&& face, double& b0, double& b1) const;
+  // The world coordinate of macro-cell face `cell` on `axis`.
+  double macro_face(int axis, int cell) const;
 
   const MacroCells& cells_;
   std::vector<std::uint8_t> empty_;
