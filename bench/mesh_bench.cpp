@@ -60,7 +60,7 @@ void BM_Pt(benchmark::State& state) {
 BENCHMARK(BM_Pt)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_PtCylindrical(benchmark::State& state) {
-  const vri::CylindricalTable cyl(table(), fin().transfer_function, 128, 128);
+  const vri::CylindricalTable cyl(table(), 128, 128);
   const vri::Camera cam = camera(int(state.range(0)));
   for (auto _ : state)
     benchmark::DoNotOptimize(vri::render_projected(cam, fin().mesh(), cyl, {.threads = 2}).data().data());
@@ -83,7 +83,7 @@ BENCHMARK(BM_SlabTable)
 
 void BM_CylindricalResample(benchmark::State& state) {
   for (auto _ : state)
-    benchmark::DoNotOptimize(vri::CylindricalTable(table(), fin().transfer_function, 128, int(state.range(0))));
+    benchmark::DoNotOptimize(vri::CylindricalTable(table(), 128, int(state.range(0))));
 }
 BENCHMARK(BM_CylindricalResample)->Arg(128)->Arg(512)->Unit(benchmark::kMillisecond)->UseRealTime();
 

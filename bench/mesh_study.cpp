@@ -53,13 +53,13 @@ int main(int argc, char** argv) {
       vri::render_projected(cam, mesh, *table, {}, {}, nullptr, vri::PtReconstruction::PerVertex));
   for (int planes : {n / 2, n, 2 * n, 4 * n})
     row("pt-cylindrical, " + std::to_string(planes) + " planes", exact,
-        vri::render_projected(cam, mesh, vri::CylindricalTable(*table, s.transfer_function, n, planes)));
+        vri::render_projected(cam, mesh, vri::CylindricalTable(*table, n, planes)));
   std::printf("\n| pt-cylindrical vs pt | max | RMS |\n|---|---|---|\n");
   for (int tile : {n, 4 * n})
     for (int planes : {n / 2, n, 2 * n, 4 * n}) {
       if (double(tile) * tile * planes > 1 << 26) continue;  // the table's size limit
       row(std::to_string(planes) + " planes, tiles " + std::to_string(tile) + "^2", pt,
-          vri::render_projected(cam, mesh, vri::CylindricalTable(*table, s.transfer_function, tile, planes)));
+          vri::render_projected(cam, mesh, vri::CylindricalTable(*table, tile, planes)));
     }
   return 0;
 }

@@ -96,15 +96,16 @@ void bind_analysis(py::module_& m) {
         "s_lo + i (s_hi - s_lo) / (N - 1) over the control points' span. tf: a dict ({\"points\":\n"
         "[[s, r, g, b, tau], ...]}), a transfer-function file or a vri.Scene. builder: order 1\n"
         "brute, incremental (default), sliced, engel or exact; order 2 plain, fast (default) or exact.\n"
-        "backend='vulkan' builds on the GPU: order 1 sliced (the default there, fp32), order 2 fast.");
+        "backend='vulkan' builds on the GPU: order 1 incremental (the default) or sliced, order 2 fast.");
   py::class_<ChannelDifference>(m, "ChannelDifference", "One channel of vri.compare.")
       .def_readonly("share_over", &ChannelDifference::share_over, "share of pixels with |a - b| > tolerance")
       .def_readonly("rms", &ChannelDifference::rms)
-      .def_readonly("max", &ChannelDifference::max)
+      .def_readonly("max", &ChannelDifference::max, "NaN when any difference is NaN")
+      .def_readonly("nan", &ChannelDifference::nan, "pixels whose difference is NaN")
       .def("__repr__", [](const ChannelDifference& d) {
         return "ChannelDifference(share_over=" + py::repr(py::float_(d.share_over)).cast<std::string>() +
                ", rms=" + py::repr(py::float_(d.rms)).cast<std::string>() +
-               ", max=" + py::repr(py::float_(d.max)).cast<std::string>() + ")";
+               ", max=" + py::repr(py::float_(d.max)).cast<std::string>() + ", nan=" + std::to_string(d.nan) + ")";
       });
   m.def("compare", &compare, py::arg("a"), py::arg("b"), py::arg("tolerance") = 1.0 / 255.0,
         "Per channel (the last axis of an (H, W, C) image), the share of pixels whose absolute\n"

@@ -37,7 +37,9 @@ std::shared_ptr<Scene> scene_from_dict(const py::dict& d, const std::optional<fs
     if (py::isinstance<GridVolume>(v)) given.emplace(v.cast<const GridVolume&>());  // shares the samples
     else if (py::isinstance<TetMesh>(v)) given.emplace(v.cast<const TetMesh&>());
     if (given) {
-      py::dict rest(d);
+      // A shallow copy: py::dict(d) would be `d` itself, and popping its
+      // "volume" broke the caller's second call (issue 47).
+      py::dict rest = d.attr("copy")();
       rest.attr("pop")("volume");
       return std::make_shared<Scene>(parse_scene(json_of(rest), std::move(*given), base, "scene"));
     }

@@ -67,6 +67,18 @@ def test_volume_from_numpy_renders_as_the_raw_file(root, cli_render):
     assert vri.render(scene, method="preint1", **SMALL).tobytes() == expected.tobytes()
 
 
+def test_a_dict_holding_a_volume_is_left_as_it_was(root):
+    # Issue 47, defect 17: the first call deleted the dict's "volume" key.
+    scene = neghip_volume_dict(root, vri.Volume.from_numpy(neghip_array(root)))
+    scene["transfer_function"]["file"] = str(root / "presets" / "neghip.json")
+    before = dict(scene)
+    first = vri.render(scene, method="preint1", **SMALL)
+    assert scene == before and "volume" in scene
+    assert vri.render(scene, method="preint1", **SMALL).tobytes() == first.tobytes()
+    vri.Scene(scene)
+    assert "volume" in scene
+
+
 @pytest.mark.parametrize("convert", [
     lambda a: np.asfortranarray(a),             # Fortran order: copied into C order
     lambda a: a.astype(np.float64),             # converted to float32, exactly

@@ -85,6 +85,8 @@ int run_render(const RenderArgs& args) {
   if (args.error_estimate && std::filesystem::path(*args.error_estimate).extension() != ".npy")
     throw Error("--error-estimate '" + *args.error_estimate + "' must end in .npy");
   if (args.trace.has_value() != !args.trace_pixel.empty()) throw Error("--trace and --trace-pixel go together");
+  if (args.trace && std::filesystem::path(*args.trace).extension() != ".csv")
+    throw Error("--trace '" + *args.trace + "' must end in .csv");
 
   // Every check comes before the first file is written.
   const SceneRenderer renderer(scene, args.flags.parsed_backend());

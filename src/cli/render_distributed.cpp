@@ -6,6 +6,7 @@
 
 #ifdef VRI_DISTRIBUTED
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <optional>
@@ -37,6 +38,8 @@ namespace {
 // Not read_file: /proc files report size 0, and a missing scene must not
 // throw here, before the first collective (load_scene says so, agreed).
 std::string file_bytes(const std::string& path) {
+  std::error_code ec;  // a FIFO would block here; load_scene refuses it after
+  if (const auto st = std::filesystem::status(path, ec); !ec && !std::filesystem::is_regular_file(st)) return {};
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }

@@ -10,8 +10,20 @@
 
 namespace vri {
 
+// The deepest nesting of arrays and objects any reader of vri accepts. Scenes
+// and messages nest 5 or 6 deep; past a few thousand levels the JSON
+// library's recursive walks (dump, comparisons, the viewer's checks)
+// overflow the stack (issue 47).
+inline constexpr int kMaxJsonDepth = 100;
+
+// The nesting depth of the arrays and objects in `text` (brackets outside
+// strings), stopping early once it passes `limit`: linear, no recursion, so
+// it can vet text before any parse.
+int json_depth(std::string_view text, int limit = kMaxJsonDepth);
+
 // The JSON of `text`; vri::Error "SOURCE: malformed JSON: ..." (nlohmann's
-// message without its byte-offset prefix) if it is not.
+// message without its byte-offset prefix) if it is not, or "SOURCE: JSON
+// nested deeper than 100 levels" before parsing.
 nlohmann::json parse_json(std::string_view text, const std::string& source);
 
 // A file's bytes as text (vri::FileError if it cannot be read).

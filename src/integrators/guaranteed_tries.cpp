@@ -25,7 +25,9 @@ VRI_AVX2_CLONES void PieceTries::run_lanes() {
   for (int k = 1; k < 5; ++k) {
     V sum = kDepthWeights[0][k - 1] * v[0][3];
     for (int j = 1; j < 5; ++j) sum = sum + kDepthWeights[j][k - 1] * v[j][3];
-    const V e = exp_neg(sum * (h0 * kDepthScale[k - 1]));
+    V depth = sum * (h0 * kDepthScale[k - 1]);
+    depth = depth < 0 ? splat(0) : depth;  // as colour_step: the quartic's dip below zero
+    const V e = exp_neg(depth);
     w[k] = v[k][3] * e;
     if (k == 4) e4 = e;
   }

@@ -1,6 +1,7 @@
 #include "vri/integrators/make_integrator.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "vri/core/error.hpp"
 #include "vri/integrators/adaptive_guaranteed.hpp"
@@ -99,8 +100,19 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMes
   refuse(spec.name, "tetrahedral meshes");
 }
 
+namespace {
+
+// The mesh's scalars, which its tables must cover (table_axis).
+std::optional<DataRange> scalar_range(const TetMesh& mesh) {
+  const auto [lo, hi] = std::minmax_element(mesh.scalars().begin(), mesh.scalars().end());
+  if (lo == mesh.scalars().end()) return std::nullopt;
+  return DataRange{*lo, *hi};
+}
+
+}  // namespace
+
 std::unique_ptr<SlabTable> make_slab_table(const MethodSpec& spec, const TetMesh& mesh, const TransferFunction& tf) {
-  const DiscreteTf discrete(tf, spec.table_size);
+  const DiscreteTf discrete(tf, spec.table_size, scalar_range(mesh));
   return std::make_unique<LengthTable>(
       build_length_table(*make_table_builder(spec.builder), discrete, spec.length_samples, mesh.max_edge_length()));
 }
@@ -110,7 +122,7 @@ std::unique_ptr<WeightedLengthTables> make_weighted_length_tables(const MethodSp
                                                                   const Lighting& lighting) {
   if (!lighting.enabled || lighting.mode != "interpolated") return nullptr;
   return std::make_unique<WeightedLengthTables>(
-      build_weighted_length_tables(DiscreteTf(tf, spec.table_size), spec.length_samples, mesh.max_edge_length()));
+      build_weighted_length_tables(DiscreteTf(tf, spec.table_size, scalar_range(mesh)), spec.length_samples, mesh.max_edge_length()));
 }
 
 }  // namespace vri

@@ -15,7 +15,7 @@ Preint1Integrator::Preint1Integrator(const GridVolume& volume, const TransferFun
                                      const FastPath& fast)
     : volume_(volume),
       h_(detail::world_step(volume, step, "preint1")),
-      tf_(tf, table_size),
+      tf_(tf, table_size, DataRange{volume.min_value(), volume.max_value()}),
       table_(make_table_builder(builder)->build(tf_, h_)),
       fast_(volume, ZeroOpacity(tf_), fast, "preint1"),
       float_math_(fast.float_math),

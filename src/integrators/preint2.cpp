@@ -34,7 +34,7 @@ Preint2Integrator::Preint2Integrator(const GridVolume& volume, const TransferFun
                                      const Lighting& lighting, const FastPath& fast)
     : volume_(volume),
       h_(detail::world_step(volume, step, "preint2")),
-      tf_(tf, table_size),
+      tf_(tf, table_size, DataRange{volume.min_value(), volume.max_value()}),
       fast_(volume, ZeroOpacity(tf_, TableOrder::Second), fast, "preint2"),
       float_sampler_(volume),
       packets_(fast.float_math && detail::packets_fit(volume)) {

@@ -65,7 +65,7 @@ Preint2DualIntegrator::Preint2DualIntegrator(const GridVolume& volume, const Tra
                                              const FastPath& fast)
     : volume_(volume),
       shader_(dual_shader(lighting, volume)),
-      tf_(tf, table_size),
+      tf_(tf, table_size, DataRange{volume.min_value(), volume.max_value()}),
       fast_(volume, ZeroOpacity(tf_, TableOrder::Second), fast, "preint2-dual"),
       float_sampler_(volume) {
   const DiscreteTf& d = tf_;

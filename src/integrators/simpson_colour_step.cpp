@@ -20,7 +20,11 @@ VRI_AVX2_CLONES ColourStep colour_step(const TfSample (&f)[5], double h) {
   for (int k = 0; k < 5; ++k) st.tau[k] = f[k].tau;
   V sum = load(kDepthWeights[0]) * f[0].tau;
   for (int j = 1; j < 5; ++j) sum = sum + load(kDepthWeights[j]) * f[j].tau;
-  const V depth = sum * (h * load(kDepthScale));
+  // The quartic through the tau samples can dip below zero between them
+  // (a sample at 1e15 beside zeros): a negative depth made e^{+708}, times
+  // tau an infinity and the sums NaN (issue 46). The depth is >= 0.
+  V depth = sum * (h * load(kDepthScale));
+  depth = depth < 0 ? splat(0) : depth;
   st.depth[0] = 0;
   store(st.depth + 1, depth);
   const V e = exp_neg(depth);

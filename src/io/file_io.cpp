@@ -15,9 +15,17 @@ namespace vri {
 
 namespace fs = std::filesystem;
 
-std::vector<std::byte> read_file(const fs::path& path) {
+void require_regular_file(const fs::path& path) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) throw FileError("cannot read '" + path.string() + "': is a directory");
+  const fs::file_status st = fs::status(path, ec);
+  if (ec) return;  // missing or unreachable: the open says why
+  if (fs::is_directory(st)) throw FileError("cannot read '" + path.string() + "': is a directory");
+  if (!fs::is_regular_file(st))
+    throw FileError("cannot read '" + path.string() + "': not a regular file (a FIFO, device or socket)");
+}
+
+std::vector<std::byte> read_file(const fs::path& path) {
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
@@ -32,6 +40,7 @@ std::vector<std::byte> read_file(const fs::path& path) {
 }
 
 std::uint64_t checked_file_size(const fs::path& path) {
+  require_regular_file(path);
   std::error_code ec;
   const auto size = fs::file_size(path, ec);
   if (ec) throw FileError("cannot open '" + path.string() + "': " + ec.message());
@@ -39,6 +48,7 @@ std::uint64_t checked_file_size(const fs::path& path) {
 }
 
 void read_file_range(const fs::path& path, std::uint64_t offset, std::span<std::byte> out) {
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
   read_stream_range(in, path, offset, out);

@@ -45,6 +45,7 @@ GridVolume::Samples read_region(ScalarType type, Endian endian, std::array<int, 
 
 GridVolume::Samples read_region_from_file(const std::filesystem::path& path, std::uint64_t start, ScalarType type,
                                           Endian endian, std::array<int, 3> dims, const GridRegion& region) {
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
   return read_region(type, endian, dims, region, [&](std::uint64_t offset, std::span<std::byte> out) {

@@ -134,6 +134,7 @@ double axis_step(const std::vector<double>& d, int axis, const std::string& wher
 
 GridVolume read_nrrd(const fs::path& path, const NrrdOptions& options) {
   const std::string where = "NRRD '" + path.string() + "'";
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
   std::string line;

@@ -1,6 +1,7 @@
 #include "vri/io/output_transaction.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -75,6 +76,17 @@ class BlockTermination {
   throw FileError("cannot write '" + target.string() + "': " + why);
 }
 
+// An existing target must be a regular file or a link (a link is replaced,
+// never followed): as root, rename() would put a CSV where /dev/null was
+// (issue 47). Checked when staging and again just before the rename.
+void refuse_special(const fs::path& target) {
+  struct stat st {};
+  if (::lstat(target.c_str(), &st) != 0) return;  // nothing there yet
+  if (S_ISDIR(st.st_mode)) fail(target, "is a directory");
+  if (!S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode))
+    fail(target, "is not a regular file (a device, FIFO or socket is never replaced)");
+}
+
 }  // namespace
 
 OutputTransaction::OutputTransaction() : previous_(g_active.exchange(this)) {}
@@ -95,6 +107,7 @@ void OutputTransaction::stage(const fs::path& target, std::span<const std::span<
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) fail(target, "directory '" + dir.string() + "' does not exist");
   if (target.filename().empty() || fs::is_directory(target, ec)) fail(target, "is a directory");
+  refuse_special(target);
   // O_EXCL: a name that exists already (a planted link included) is never
   // opened; another name is tried instead.
   fs::path temp;
@@ -139,6 +152,7 @@ void OutputTransaction::commit() {
   while (!staged_.empty()) {
     const Staged s = staged_.front();
     // rename() replaces a link at the target; it never writes through it.
+    refuse_special(s.target);
     if (::rename(s.temp.c_str(), s.target.c_str()) != 0) fail(s.target, std::strerror(errno));
     unregister_temp(s.temp);
     staged_.erase(staged_.begin());

@@ -17,10 +17,12 @@ std::vector<ChannelDifference> compare_images(std::span<const float> a, std::spa
   for (std::size_t p = 0; p < pixels; ++p)
     for (int c = 0; c < channels; ++c) {
       const double d = std::abs(double(a[p * channels + c]) - double(b[p * channels + c]));
-      // NaN counts as over the tolerance and as the maximum.
+      // NaN counts as over the tolerance and makes the maximum NaN for good
+      // (a later finite difference must not hide it).
       if (!(d <= tolerance)) ++over[c];
       sq[c] += d * d;
-      if (!(d <= out[c].max)) out[c].max = d;
+      if (std::isnan(d)) ++out[c].nan;
+      if (!(d <= out[c].max) && !std::isnan(out[c].max)) out[c].max = d;
     }
   for (int c = 0; c < channels; ++c) {
     out[c].share_over = pixels ? double(over[c]) / pixels : 0.0;

@@ -49,10 +49,10 @@ SceneRenderer::SceneRenderer(const Scene& scene, Backend backend) : scene_(check
   p.weighted = make_weighted_length_tables(m, scene.mesh(), scene.transfer_function, scene.lighting);
   if (m.name == "pt-cylindrical") {
     const int size = m.table_size, planes = m.planes > 0 ? m.planes : size;
-    p.cylinder.emplace(*p.table, scene.transfer_function, size, planes);
+    p.cylinder.emplace(*p.table, size, planes);
     if (p.weighted)
-      p.weighted_cylinder.emplace(CylindricalTable(p.weighted->front, scene.transfer_function, size, planes),
-                                  CylindricalTable(p.weighted->back, scene.transfer_function, size, planes));
+      p.weighted_cylinder.emplace(CylindricalTable(p.weighted->front, size, planes),
+                                  CylindricalTable(p.weighted->back, size, planes));
   }
 }
 

@@ -8,8 +8,9 @@
 
 namespace vri {
 
-CylindricalTable::CylindricalTable(const SlabTable& table, const TransferFunction& tf, int size, int planes)
-    : n_(size), planes_(planes), s_lo_(tf.s_lo()), s_span_(tf.s_hi() - tf.s_lo()), max_length_(table.max_length()) {
+CylindricalTable::CylindricalTable(const SlabTable& table, int size, int planes)
+    : n_(size), planes_(planes), s_lo_(table.axis().s_lo), s_span_(table.axis().s_hi - table.axis().s_lo),
+      max_length_(table.max_length()) {
   if (size < 2 || size > 4096) throw Error("cylindrical table size must be in [2, 4096], got " + std::to_string(size));
   if (planes < 2 || planes > 16384)
     throw Error("cylindrical table planes must be in [2, 16384], got " + std::to_string(planes));

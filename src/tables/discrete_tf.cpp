@@ -25,10 +25,15 @@ TfSample lerp(const TfSample& a, const TfSample& b, double w) {
 
 }  // namespace
 
-DiscreteTf::DiscreteTf(const TransferFunction& tf, int n) {
+ScalarAxis table_axis(const TransferFunction& tf, int n, std::optional<DataRange> data) {
+  if (!data) return {tf.s_lo(), tf.s_hi(), n};
+  return {std::min(tf.s_lo(), data->lo), std::max(tf.s_hi(), data->hi), n};
+}
+
+DiscreteTf::DiscreteTf(const TransferFunction& tf, int n, std::optional<DataRange> data) {
   if (n < 2 || n > kMaxSize)
     throw Error("table size must be in [2, " + std::to_string(kMaxSize) + "], got " + std::to_string(n));
-  axis_ = {tf.s_lo(), tf.s_hi(), n};
+  axis_ = table_axis(tf, n, data);
   samples_.reserve(n);
   for (int i = 0; i < n; ++i) samples_.push_back(tf(axis_.scalar(i)));
   sub_begin_.assign(n + 1, 0);

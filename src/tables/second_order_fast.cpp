@@ -241,6 +241,7 @@ SecondOrderTable FastSecondOrderBuilder::build(const DiscreteTf& tf, double leng
   walk_entries<false>(tf, length, iterations, [&](int f, int m, int b, int j, const LaneResults& out) {
     store(table.entry(f, m, b), out, j);
   });
+  write_straight_entries(tf, table);
   return table;
 }
 
@@ -253,6 +254,17 @@ SecondOrderWeightedTables FastSecondOrderBuilder::build_weighted(const DiscreteT
     store(t.full.entry(f, m, b), out, j);
     store_weighted(t.middle.entry(f, m, b), out, 0, j);
     store_weighted(t.back.entry(f, m, b), out, 1, j);
+  });
+  // The straight entries as build() writes them, and their weighted parts
+  // from the same definition.
+  write_straight_entries(tf, t.full);
+  const int n = tf.size();
+  tbb::parallel_for(0, n, [&](int f) {
+    for (int b = f % 2; b < n; b += 2) {
+      const SecondOrderWeights w = second_order_weighted_entry(tf, f, (f + b) / 2, b, length, iterations);
+      store(t.middle.entry(f, (f + b) / 2, b), w.middle);
+      store(t.back.entry(f, (f + b) / 2, b), w.back);
+    }
   });
   return t;
 }

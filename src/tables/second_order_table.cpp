@@ -46,6 +46,15 @@ SlabRgba second_order_entry(const DiscreteTf& tf, double u_f, double u_m, double
   return acc;
 }
 
+void write_straight_entries(const DiscreteTf& tf, SecondOrderTable& table) {
+  const int n = tf.size();
+  tbb::parallel_for(0, n, [&](int f) {
+    for (int b = f % 2; b < n; b += 2)  // f + b even: m = (f + b) / 2 is an entry
+      store(table.entry(f, (f + b) / 2, b),
+            second_order_entry(tf, f, (f + b) / 2, b, table.length(), table.iterations()));
+  });
+}
+
 void check_iterations(int iterations) {
   if (iterations < 1 || iterations > kMaxSecondOrderIterations)
     throw Error("--iterations must be in [1, " + std::to_string(kMaxSecondOrderIterations) + "], got " +

@@ -3,6 +3,7 @@
 // SIGTERM removes them, concurrent writers never mix, and memory limits fail
 // cleanly.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -59,6 +60,26 @@ TEST(OutputSafety, ALinkAtTheTargetIsReplacedNotFollowed) {  // defect 8
   ASSERT_EQ(run("render " + scene + " -o " + (dir / "out.npy").string(), dir).code, 0);
   EXPECT_EQ(test::slurp(dir / "victim.txt"), "keep");
   EXPECT_FALSE(fs::is_symlink(dir / "out.npy"));
+}
+
+// Issue 47, defect 9: as root, `--trace /dev/null` replaced the device node
+// with a CSV. A FIFO stands in for a device (no root needed to make one).
+TEST(OutputSafety, ANonRegularFileAtTheTargetIsNeverReplaced) {
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, test::kGoodScene);
+  const fs::path fifo = dir / "out.npy";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const ProcessResult r = run("render " + scene + " -o " + fifo.string(), dir);
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("is not a regular file"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  // --trace names a CSV, like `vri ray`'s output.
+  const ProcessResult trace = run("render " + scene + " -o " + (dir / "a.npy").string() +
+                                      " --method adaptive --trace-pixel 1 1 --trace " + (dir / "t.npy").string(),
+                                  dir);
+  EXPECT_EQ(trace.code, 1);
+  EXPECT_NE(trace.err.find("must end in .csv"), std::string::npos) << trace.err;
+  EXPECT_FALSE(fs::exists(dir / "a.npy"));
 }
 
 TEST(OutputSafety, ALinkAtTheTemporaryNameIsNotFollowed) {  // defect 8

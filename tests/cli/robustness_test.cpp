@@ -2,6 +2,7 @@
 // caps, refused non-finite output, strict scene keys, `compare`'s exit
 // status, the transparent-image warning and the shape of error messages.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cmath>
@@ -36,6 +37,34 @@ std::string replaced(std::string s, const std::string& from, const std::string& 
   const auto p = s.find(from);
   EXPECT_NE(p, std::string::npos) << from;
   return s.replace(p, from.size(), to);
+}
+
+// Issue 47, defect 6: 100 000 nested brackets in a scene or a transfer
+// function exited 139 (the JSON library's recursive dump, quoting the value).
+TEST(CliRobustness, DeepNestingIsRefusedWithOneLine) {
+  test::TempDir dir;
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  const std::string scene = scene_with(dir, replaced(test::kGoodScene, R"("eye": [5.5, 5.5, 40])", R"("eye": )" + deep));
+  expect_refused("render " + scene + " -o " + (dir / "out.npy").string(), "nested deeper than 100 levels", dir);
+  const auto tf = dir / "deep_tf.json";
+  test::write_text(tf, R"({"points": )" + deep + "}");
+  const std::string tf_scene = scene_with(
+      dir, replaced(test::kGoodScene, R"({"points": [[-6, 1, 0.5, 0, 0.5], [0, 0, 0, 1, 0]]})",
+                    R"({"file": ")" + tf.string() + R"("})"));
+  expect_refused("render " + tf_scene + " -o " + (dir / "out.npy").string(), "nested deeper than 100 levels", dir);
+}
+
+// Issue 47, defect 11: a FIFO given as scene or transfer function blocked
+// forever (its open waits for a writer).
+TEST(CliRobustness, AFifoIsRefusedNotWaitedOn) {
+  test::TempDir dir;
+  const fs::path fifo = dir / "fifo.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expect_refused("render " + fifo.string() + " -o " + (dir / "out.npy").string(), "not a regular file", dir);
+  const std::string tf_scene = scene_with(
+      dir, replaced(test::kGoodScene, R"({"points": [[-6, 1, 0.5, 0, 0.5], [0, 0, 0, 1, 0]]})",
+                    R"({"file": ")" + fifo.string() + R"("})"));
+  expect_refused("render " + tf_scene + " -o " + (dir / "out.npy").string(), "not a regular file", dir);
 }
 
 TEST(CliRobustness, RayStepMustBeFinite) {  // defect 4
@@ -139,7 +168,28 @@ TEST(CliRobustness, CompareExitsOneWhenPixelsAreOverTheTolerance) {  // defect 1
   EXPECT_EQ(run("compare " + a + " " + b + " --tolerance 0", dir).code, 1);
   EXPECT_EQ(run("compare " + a + " " + b + " --tolerance 0 --max-share 1", dir).code, 0);
   EXPECT_EQ(run("compare " + a + " " + b + " --tolerance 1", dir).code, 0);
-  EXPECT_NE(run("compare " + a + " " + b + " --max-share 2", dir).code, 0);
+  EXPECT_EQ(run("compare " + a + " " + b + " --max-share 2", dir).code, 2);
+}
+
+// Issue 46, class 7 (SPEC §12): 0 within, 1 over, 2 on an error; a NaN is
+// reported and fails whatever the share, even after finite pixels.
+TEST(CliRobustness, CompareExitsTwoOnErrorsAndReportsNan) {
+  test::TempDir dir;
+  const auto a = (dir / "a.npy").string(), nan = (dir / "nan.npy").string(), small = (dir / "small.npy").string();
+  std::vector<float> pixels(2 * 3 * 4, 0.25f);
+  write_npy(a, {2, 3, 4}, pixels);
+  pixels[4 * 4 + 3] = NAN;  // pixel 4's alpha, after finite ones
+  write_npy(nan, {2, 3, 4}, pixels);
+  write_npy(small, {1, 3, 4}, std::span<const float>(pixels.data(), 12));
+  const ProcessResult over = run("compare " + a + " " + nan + " --max-share 1", dir);
+  EXPECT_EQ(over.code, 1) << over.err;
+  EXPECT_NE(over.out.find("a        0.166667         nan           nan           1"), std::string::npos) << over.out;
+  EXPECT_EQ(run("compare " + a + " " + a, dir).code, 0);
+  const ProcessResult missing = run("compare " + a + " " + (dir / "none.npy").string(), dir);
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
+  EXPECT_EQ(run("compare " + a + " " + small, dir).code, 2);
+  EXPECT_EQ(run("compare " + a + " " + a + " --tolerance -1", dir).code, 2);
 }
 
 TEST(CliRobustness, AllTransparentImagesAreExplained) {  // defect 12

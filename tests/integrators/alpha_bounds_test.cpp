@@ -56,11 +56,11 @@ Image render_with(const Scene& scene, const MethodSpec& spec, const Camera& cam)
     const auto table = make_slab_table(spec, scene.mesh(), scene.transfer_function);
     const auto weighted = make_weighted_length_tables(spec, scene.mesh(), scene.transfer_function, scene.lighting);
     if (spec.name == "pt") return render_projected(cam, scene.mesh(), *table, {}, scene.lighting, weighted.get());
-    const CylindricalTable cyl(*table, scene.transfer_function, spec.table_size, spec.table_size);
+    const CylindricalTable cyl(*table, spec.table_size, spec.table_size);
     if (!weighted) return render_projected(cam, scene.mesh(), cyl, {}, scene.lighting);
     const WeightedCylindricalTables wc{
-        CylindricalTable(weighted->front, scene.transfer_function, spec.table_size, spec.table_size),
-        CylindricalTable(weighted->back, scene.transfer_function, spec.table_size, spec.table_size)};
+        CylindricalTable(weighted->front, spec.table_size, spec.table_size),
+        CylindricalTable(weighted->back, spec.table_size, spec.table_size)};
     return render_projected(cam, scene.mesh(), cyl, {}, scene.lighting, &wc);
   }
   const auto integ = std::visit(

@@ -104,10 +104,10 @@ TEST(ProjectedTetrahedra, InterpolatedLightingMatchesRaycast) {
   EXPECT_THROW(render_projected(cam, mesh, *table, {}, light), Error);
   // pt-cylindrical reads the weighted tables resampled on its planes: close to
   // pt (as unlit, CylindricalPlanesApproachPt); without them it refuses the mode.
-  const CylindricalTable cylinder(*table, tf(), 64, 64);
+  const CylindricalTable cylinder(*table, 64, 64);
   EXPECT_THROW(render_projected(cam, mesh, cylinder, {}, light), Error);
-  const WeightedCylindricalTables wc{CylindricalTable(weighted->front, tf(), 64, 64),
-                                     CylindricalTable(weighted->back, tf(), 64, 64)};
+  const WeightedCylindricalTables wc{CylindricalTable(weighted->front, 64, 64),
+                                     CylindricalTable(weighted->back, 64, 64)};
   const Image cyl = render_projected(cam, mesh, cylinder, {.threads = 1}, light, &wc);
   const Image cyl2 = render_projected(cam, mesh, cylinder, {.threads = 2, .tile_size = 7}, light, &wc);
   ASSERT_EQ(0, std::memcmp(cyl.data().data(), cyl2.data().data(), cyl.data().size() * sizeof(float)));
@@ -220,7 +220,7 @@ TEST(ProjectedTetrahedra, CylindricalPlanesApproachPt) {
   const Camera cam(cs);
   const Image pt = render_projected(cam, mesh, table);
   auto error = [&](int size, int planes) {
-    const Image cyl = render_projected(cam, mesh, CylindricalTable(table, tf(), size, planes));
+    const Image cyl = render_projected(cam, mesh, CylindricalTable(table, size, planes));
     double e = 0;
     for (std::size_t i = 0; i < pt.data().size(); ++i) e = std::max(e, double(std::abs(pt.data()[i] - cyl.data()[i])));
     return e;

@@ -29,5 +29,18 @@ TEST(CompareImages, NanCountsAsOverAndSizesMustMatch) {
   EXPECT_THROW(compare_images(one_zero, zeros, 1, 0.1), Error);
 }
 
+// Issue 46, class 7: a NaN before a finite difference left a finite maximum.
+TEST(CompareImages, ANanAnywhereStaysInTheMaximumAndIsCounted) {
+  const std::vector<float> a{NAN, 0.f, 0.5f, 0.f, 0.f, NAN}, b{0.f, 0.f, 0.f, 0.f, 0.f, 0.f};
+  const auto d = compare_images(a, b, 2, 0.1);
+  EXPECT_TRUE(std::isnan(d[0].max));
+  EXPECT_EQ(d[0].nan, 1u);
+  EXPECT_TRUE(std::isnan(d[1].max));
+  EXPECT_EQ(d[1].nan, 1u);
+  const auto clean = compare_images(b, b, 2, 0.1);
+  EXPECT_EQ(clean[0].nan, 0u);
+  EXPECT_EQ(clean[0].max, 0);
+}
+
 }  // namespace
 }  // namespace vri

@@ -111,6 +111,7 @@ TEST(SecondOrderWeighted, FastEqualsItsChordModelInEveryEntry) {
     for (int f = 0; f < 19; ++f)
       for (int m = 0; m < 19; ++m)
         for (int b = 0; b < 19; ++b) {
+          if (2 * m == f + b) continue;  // straight: the definition (StraightEntriesAreTheFirstOrderSlab)
           const SecondOrderWeights w = model.entry(f, m, b);
           for (int c = 0; c < 4; ++c)
             worst = std::max({worst, std::abs(q.full.entry(f, m, b)[c] - channel(w.full, c)),

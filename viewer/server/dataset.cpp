@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/json_support.hpp"
 #include "scene/scene_json.hpp"
 #include "vri/camera/framing.hpp"
 #include "vri/core/error.hpp"
@@ -98,7 +99,10 @@ std::shared_ptr<const Dataset> load_dataset(const fs::path& file, const std::str
   std::optional<Volume> volume;
   std::optional<Histogram> h;  // one pass over the samples, for the description and a bare volume's scene
   if (file.extension() == ".json") {
-    scene = json::parse(read_text(file), nullptr, false);
+    const std::string text = read_text(file);
+    if (json_depth(text) > kMaxJsonDepth)
+      throw Error("scene " + source + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    scene = json::parse(text, nullptr, false);
     if (!scene.is_object() || !scene.contains("volume"))
       throw Error("scene " + source + ": not a scene file (a JSON object with a 'volume')");
     Scene loaded = load_scene(file);  // every check `vri render` makes

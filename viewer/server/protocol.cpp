@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/json_support.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri::viewer {
@@ -75,6 +76,9 @@ RenderRequest render_request(const json& j) {
 
 ClientMessage parse_client_message(std::string_view text) {
   if (text.size() > kMaxMessageBytes) throw Error("message over " + std::to_string(kMaxMessageBytes) + " bytes");
+  // Before any parse: the checks below walk the value recursively (issue 47).
+  if (json_depth(text) > kMaxJsonDepth)
+    throw Error("message nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
   const json j = json::parse(text, nullptr, false);
   if (j.is_discarded()) throw Error("message is not JSON");
   if (!j.is_object()) throw Error("message is not a JSON object");
@@ -88,6 +92,7 @@ ClientMessage parse_client_message(std::string_view text) {
 }
 
 std::int64_t seq_of(std::string_view text) {
+  if (text.size() > kMaxMessageBytes || json_depth(text) > kMaxJsonDepth) return -1;
   const json j = json::parse(text, nullptr, false);
   if (j.is_object() && j.contains("seq") && j["seq"].is_number_integer()) return j["seq"].get<std::int64_t>();
   return -1;

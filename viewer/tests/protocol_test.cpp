@@ -75,6 +75,19 @@ TEST(Protocol, RefusesMessagesOverTheLimit) {
   EXPECT_EQ(refusal(big), "message over 262144 bytes");
 }
 
+// Issue 47, defect 1: 100 000 nested brackets crashed the server (a
+// recursive walk over the value on the I/O thread's stack).
+TEST(Protocol, RefusesDeepNestingBeforeAnyWalk) {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  EXPECT_EQ(refusal(render_message("", R"({"camera": )" + deep + "}")), "message nested deeper than 100 levels");
+  EXPECT_EQ(seq_of(R"({"seq": 4, "x": )" + deep + "}"), -1);
+  // Brackets inside strings do not count; 100 levels are still read.
+  EXPECT_EQ(refusal(R"({"type": "open", "dataset": ")" + std::string(1000, '[') + "\"}"), "accepted");
+  const std::string hundred = std::string(97, '[') + std::string(97, ']');  // under message, scene, camera
+  EXPECT_EQ(refusal(render_message("", R"({"camera": {"x": )" + hundred + "}}")).find("nested"), std::string::npos);
+  EXPECT_NE(refusal(render_message("", R"({"camera": {"x": [)" + hundred + "]}}")).find("nested"), std::string::npos);
+}
+
 TEST(Protocol, FindsTheSeqOfABadMessage) {
   EXPECT_EQ(seq_of(R"({"type": "render", "seq": 12, "quality": "nope"})"), 12);
   EXPECT_EQ(seq_of("garbage"), -1);

@@ -11,11 +11,11 @@ GridParams grid_params(const VulkanDevice& device, const GridVolume& volume, int
   g.sy = static_cast<std::uint32_t>(dims[0]);
   g.sz = static_cast<std::uint32_t>(dims[0]) * static_cast<std::uint32_t>(dims[1]);
   g.type = type;
-  for (int a = 0; a < 3; ++a) {
-    g.top[a] = static_cast<float>(dims[a] - 1);
-    g.last_cell[a] = dims[a] - 2;
-  }
+  for (int a = 0; a < 3; ++a) g.last_cell[a] = dims[a] - 2;
+  // The CPU stops once T < termination in double: the shader compares its
+  // double-float T with the same double, split in two floats.
   g.termination = static_cast<float>(termination);
+  g.termination_lo = static_cast<float>(termination - static_cast<double>(g.termination));
   g.part_shift = device.part_shift();
   return g;
 }

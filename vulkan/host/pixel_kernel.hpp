@@ -18,13 +18,15 @@ struct GridParams {
   std::uint32_t sy, sz;
   std::int32_t type;
   std::uint32_t pixels;
-  float top[3];
+  float termination_lo;  // the threshold in double-float: termination + termination_lo
+  float unused[2];
   std::uint32_t row_pixels;
   std::int32_t last_cell[3];
   float termination;
   std::uint32_t part_shift;  // log2 of a GpuArray part's bytes (gpu_array.hpp)
 };
-static_assert(sizeof(GridParams) == 52 && offsetof(GridParams, top) == 16 && offsetof(GridParams, last_cell) == 32);
+static_assert(sizeof(GridParams) == 52 && offsetof(GridParams, termination_lo) == 16 &&
+              offsetof(GridParams, last_cell) == 32);
 
 // The volume's part of GridParams (the dispatch's part is set by run_pixels).
 GridParams grid_params(const VulkanDevice& device, const GridVolume& volume, int type, double termination);

@@ -45,7 +45,8 @@ VulkanPreint::VulkanPreint(std::shared_ptr<const VulkanDevice> device, const Sce
     : VulkanGridRenderer(std::move(device), scene),
       steps_(scene.method.name == "preint2" ? 2 : 1),
       h_(detail::world_step(scene.grid(), scene.method.step, scene.method.name.c_str())),
-      tf_(scene.transfer_function, scene.method.table_size),
+      tf_(scene.transfer_function, scene.method.table_size,
+          DataRange{scene.grid().min_value(), scene.grid().max_value()}),
       sampler_(scene.grid()) {
   const Lighting& lighting = scene.lighting;
   if (lighting.enabled && lighting.mode != "sampled" && lighting.mode != "interpolated")

@@ -50,7 +50,8 @@ GpuArray on_device(const std::shared_ptr<const VulkanDevice>& device, const Seco
 VulkanPreint2Dual::VulkanPreint2Dual(std::shared_ptr<const VulkanDevice> device, const Scene& scene)
     : VulkanGridRenderer(std::move(device), scene),
       tf_(scene.transfer_function,
-          scene.method.table_size_given ? scene.method.table_size : Preint2DualIntegrator::kDefaultTableSize),
+          scene.method.table_size_given ? scene.method.table_size : Preint2DualIntegrator::kDefaultTableSize,
+          DataRange{scene.grid().min_value(), scene.grid().max_value()}),
       axis_(tf_.axis()),
       max_length_(Preint2DualIntegrator::max_slab_length(scene.grid())),
       lengths_(Preint2DualIntegrator::kLengths) {

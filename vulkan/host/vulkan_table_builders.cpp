@@ -124,6 +124,7 @@ SecondOrderTable VulkanSecondOrderBuilder::build(const DiscreteTf& tf, double le
   b.add(entries).add(&chords_on_device);
   kernel_.run(groups_of_64(n), static_cast<std::uint32_t>(n), b.list(), &p, static_cast<std::uint32_t>(n));
   entries.download(std::as_writable_bytes(std::span<float>(table.entry(0, 0, 0), floats)));
+  write_straight_entries(tf, table);  // as the CPU's fast builder
   return table;
 }
 

@@ -9,7 +9,7 @@
 // A piece may be empty (ta == tb where two faces are crossed at once).
 // walk_leap passes over the rest of an empty macro cell.
 // Needs before it: double_float.glsl, DF u0[3], du[3] (the grid position at
-// the entry and per world unit), empty_space.glsl and in `p`: last_cell, top.
+// the entry and per world unit), empty_space.glsl and in `p`: last_cell (GRID_TOP).
 
 struct CellWalk {
   int dir[3];       // -1, 0, 1: the ray's direction per axis
@@ -71,7 +71,7 @@ void walk_leap(inout CellWalk w, ivec3 cell, DF t_end) {
   DF t_x = t_end;
   for (int a = 0; a < 3; ++a) {
     if (w.dir[a] == 0) continue;
-    const float face = w.dir[a] > 0 ? min(float((m[a] + 1) * kMacroCells), p.top[a]) : float(m[a] * kMacroCells);
+    const float face = w.dir[a] > 0 ? min(float((m[a] + 1) * kMacroCells), GRID_TOP(a)) : float(m[a] * kMacroCells);
     t_x = df_min(t_x, crossing(a, face));
   }
   if (!df_less(w.ta, t_x)) return;

@@ -28,7 +28,7 @@ float macro_exit(Cell c) {
   const ivec3 m = c.index / kMacroCells;
   float s = 3.0e38;
   for (int a = 0; a < 3; ++a) {
-    const float lo = float(m[a] * kMacroCells), hi = min(float((m[a] + 1) * kMacroCells), p.top[a]);
+    const float lo = float(m[a] * kMacroCells), hi = min(float((m[a] + 1) * kMacroCells), GRID_TOP(a));
     precise float from_lo = (lo - u0[a].hi) - u0[a].lo, from_hi = (hi - u0[a].hi) - u0[a].lo;
     if (du[a].hi > 0.0) s = min(s, from_hi / du[a].hi);
     else if (du[a].hi < 0.0) s = min(s, from_lo / du[a].hi);

@@ -43,7 +43,7 @@ void ftb_add_step(inout FrontToBack acc, vec3 c, float e) {
   acc.T = df_mul_f(acc.T, e);
 }
 
-bool ftb_below(FrontToBack acc, float termination) { return df_less(acc.T, DF(termination, 0.0)); }
+bool ftb_below(FrontToBack acc, DF termination) { return df_less(acc.T, termination); }
 
 vec4 ftb_pixel(FrontToBack acc) {
   return vec4(df_float(acc.r), df_float(acc.g), df_float(acc.b), df_float(df_sub(DF(1.0, 0.0), acc.T)));

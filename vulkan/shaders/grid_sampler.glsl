@@ -5,8 +5,8 @@
 // stay in their stored type, packed in 32-bit words (uint8 four to a word,
 // 16-bit two): a 256^3 uint8 volume takes 16 MiB on the GPU, not 64.
 // Needs before it: SPLIT_INPUT(uint, volume, ...) (split_array.glsl) and the
-// push-constant block `p` with the volume's layout (grid.type, sy, sz, top,
-// last_cell).
+// push-constant block `p` with the volume's layout (grid.type, sy, sz,
+// last_cell; GRID_TOP).
 
 // The storage types of GridVolume (other file types are converted on loading).
 const int kUInt8 = 0, kUInt16 = 1, kInt16 = 2, kFloat32 = 3;
@@ -33,7 +33,7 @@ Cell grid_cell(DF u[3]) {
   for (int a = 0; a < 3; ++a) {
     DF x = u[a];
     if (x.hi < 0.0 || (x.hi == 0.0 && x.lo < 0.0)) x = DF(0.0, 0.0);
-    if (x.hi > p.top[a] || (x.hi == p.top[a] && x.lo > 0.0)) x = DF(p.top[a], 0.0);
+    if (x.hi > GRID_TOP(a) || (x.hi == GRID_TOP(a) && x.lo > 0.0)) x = DF(GRID_TOP(a), 0.0);
     float fl = floor(x.hi);
     if (fl == x.hi && x.lo < 0.0) fl -= 1.0;  // hi an integer, the value just below it
     int i = int(fl);

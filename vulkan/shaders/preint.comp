@@ -141,7 +141,7 @@ void main() {
     // same places in the code in every turn (SIMD lanes stay together).
     Sample front = sample_at(0, true);
     for (int k = 0; k < full;) {  // `front` is slab k's
-      if (ftb_below(acc, p.termination)) break;
+      if (ftb_below(acc, GRID_TERMINATION)) break;
       int to = k + 1;
       bool composite = true;
       if (front.exit >= 0.0) {
@@ -160,7 +160,7 @@ void main() {
       front = back;
       k = to;
     }
-    if (!ftb_below(acc, p.termination))
+    if (!ftb_below(acc, GRID_TERMINATION))
       for (uint k = 0u; k < STEPS; ++k) {
         DF v[4];
         for (uint c = 0u; c < 4u; ++c) {

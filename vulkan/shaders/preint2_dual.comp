@@ -98,7 +98,7 @@ void main() {
   FrontToBack acc = ftb_start();
   CellWalk w = walk_start();
   while (t_end.hi > 0.0 && df_less(w.ta, t_end)) {
-    if (ftb_below(acc, p.termination)) break;
+    if (ftb_below(acc, GRID_TERMINATION)) break;
     const DF ta = w.ta, tb = walk_next(w, t_end);
     w.ta = tb;
     if (df_less(ta, tb)) {

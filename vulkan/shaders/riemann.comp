@@ -62,7 +62,7 @@ void main() {
   const vec3 d = vec3(rays.r[b + 18u], rays.r[b + 19u], rays.r[b + 20u]);
   FrontToBack acc = ftb_start();
   for (int k = 0; k < n; ++k) {
-    if (ftb_below(acc, p.termination)) break;
+    if (ftb_below(acc, GRID_TERMINATION)) break;
     const bool last = k == n - 1;
     const DF t = df_two_sum(float(k), last ? o_last.hi : o.hi);
     const DF at_k = df_add(t, DF(0.0, last ? o_last.lo : o.lo));

@@ -29,6 +29,7 @@ ColourStep colour_step(vec4 f[5], float T, float h) {
   vec4 g[5];
   ColourStep st;
   for (int k = 0; k < 5; ++k) {
+    depth[k] = max(depth[k], 0.0);  // the quartic can dip below zero (simpson_colour_step.cpp)
     const float e = exp_neg(depth[k]);
     if (k == 4) st.attenuation = e;
     const float w = f[k].w * T * e;

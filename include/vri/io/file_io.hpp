@@ -11,6 +11,10 @@ namespace vri {
 
 // Reads the whole file; throws vri::Error naming the path if it cannot.
 std::vector<std::byte> read_file(const std::filesystem::path& path);
+// vri::FileError unless `path` is missing (the open says so) or a regular
+// file: a FIFO would block the open forever, a device never ends (issue 47).
+// Every reader of vri calls it before opening.
+void require_regular_file(const std::filesystem::path& path);
 
 // The file's size in bytes; throws vri::Error naming the path if it has none.
 std::uint64_t checked_file_size(const std::filesystem::path& path);

@@ -18,15 +18,14 @@
 
 #include "vri/core/rgba.hpp"
 #include "vri/tables/slab_table.hpp"
-#include "vri/transfer/transfer_function.hpp"
 
 namespace vri {
 
 class CylindricalTable {
  public:
-  // Resamples `table` (over the transfer function's [s_lo, s_hi] and lengths up
-  // to table.max_length()) on `planes` >= 2 planes of size x size.
-  CylindricalTable(const SlabTable& table, const TransferFunction& tf, int size, int planes);
+  // Resamples `table` (over its axis and lengths up to table.max_length())
+  // on `planes` >= 2 planes of size x size.
+  CylindricalTable(const SlabTable& table, int size, int planes);
 
   // Equation 10: the plane through the diagonal and (l, s_f, s_b), in [0, 1].
   double alpha(double l, double s_f, double s_b) const;

@@ -2,11 +2,13 @@
 // DiscreteTf: the transfer function as every pre-integration table sees it
 // (SPEC §10). Its table axis has N table scalars
 //   x_i = s_lo + i * (s_hi - s_lo) / (N - 1),   i = 0 .. N-1,
-// [s_lo, s_hi] spanning the control points. Between two neighbouring table
+// [s_lo, s_hi] spanning the control points (SPEC §10, `vri table`) and, for
+// rendering, the data's scalars too (table_axis). Between two neighbouring table
 // scalars (a "bin") r, g, b, tau are the transfer function itself: linear when
 // no control point falls inside the bin, else split into linear sub-pieces at
 // the control points inside it (steps included). So a feature narrower than
 // a bin is integrated, not dropped between samples (issue 16).
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -24,6 +26,21 @@ struct ScalarAxis {
   double index(double s) const;
 };
 
+// The scalars a volume holds, [lo, hi]: what a rendering table must cover.
+struct DataRange {
+  double lo, hi;
+};
+
+// The axis of an n-entry table of `tf`: the control points' span (SPEC §10)
+// widened to `data`. A slab whose scalar runs outside the axis was clamped
+// into it, which moved the time it spends below the first point onto the
+// first entry: below a step at the first point ("transparent below 50": two
+// points at s = 50, the first point holding below, SPEC §3) every scalar took
+// the value above, RMS 0.52 against `exact` (issue 46); below a ramp the
+// slab saw more of the ramp than it crosses. Covering the data, no scalar a
+// ray meets (trilinear or linear: within the data's range) is clamped.
+ScalarAxis table_axis(const TransferFunction& tf, int n, std::optional<DataRange> data = std::nullopt);
+
 // One linear piece of a bin, in continuous index units: p at u0, q at u1 (u0 <= u1).
 struct SubPiece {
   double u0, u1;
@@ -32,8 +49,9 @@ struct SubPiece {
 
 class DiscreteTf {
  public:
-  // Throws vri::Error unless 2 <= n <= kMaxSize.
-  DiscreteTf(const TransferFunction& tf, int n);
+  // Throws vri::Error unless 2 <= n <= kMaxSize. The axis: table_axis(tf, n,
+  // data); rendering passes the volume's range, `vri table` none.
+  DiscreteTf(const TransferFunction& tf, int n, std::optional<DataRange> data = std::nullopt);
   static constexpr int kMaxSize = 4096;  // a 4096 x 4096 table is 256 MiB
 
   const ScalarAxis& axis() const { return axis_; }

@@ -46,6 +46,7 @@ class LengthTable final : public SlabTable {
 
   const std::vector<PreintegrationTable>& slices() const { return slices_; }
   double max_length() const override { return max_length_; }
+  const ScalarAxis& axis() const override { return slices_.front().axis(); }
   // The (M, N, N, 4) array, C order.
   std::vector<float> data() const;
   // Linear in l (clamped to [0, max_length]) between the two nearest slices.

@@ -78,6 +78,14 @@ SlabRgba second_order_entry(const DiscreteTf& tf, double u_f, double u_m, double
 // Throws vri::Error unless 1 <= iterations <= kMaxSecondOrderIterations.
 void check_iterations(int iterations);
 
+// Where the parabola through (f, m, b) is straight (2 m = f + b) the entry is
+// the first-order slab from f to b. Builders whose chords are lookups (fast,
+// on the CPU and the GPU) were up to 0.38 from it at steps and spikes
+// narrower than a bin, the more the more chords (issue 46): they overwrite
+// these N^2 / 2 entries with second_order_entry, the definition (`plain`'s
+// bytes there; exact to rounding, the chords of a line composing to it).
+void write_straight_entries(const DiscreteTf& tf, SecondOrderTable& table);
+
 struct SecondOrderWeightedTables;  // second_order_weighted.hpp
 
 class SecondOrderBuilder {

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "vri/core/rgba.hpp"
+#include "vri/tables/discrete_tf.hpp"
 
 namespace vri {
 
@@ -30,6 +31,8 @@ class SlabTable {
   // l in [0, max_length()]; scalars outside the table's range are clamped to it.
   virtual Rgba lookup(double l, double s_f, double s_b) const = 0;
   virtual double max_length() const = 0;
+  // The scalars its entries stand for (discrete_tf.hpp).
+  virtual const ScalarAxis& axis() const = 0;
 };
 
 }  // namespace vri

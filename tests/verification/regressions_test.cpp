@@ -1,0 +1,27 @@
+// Every case the verification campaign ever failed on, by seed, with what
+// broke (issue 46: each failure it finds becomes a named regression test).
+// Each runs every check of case_checks.hpp on its case.
+#include <gtest/gtest.h>
+
+#include "verification/case_checks.hpp"
+
+namespace vri::verify {
+namespace {
+
+void expect_no_violation(std::uint64_t seed) {
+  const Case c = make_case(seed);
+  for (const Violation& v : check_case(c, {.table_convergence = false}))
+    ADD_FAILURE() << "seed " << seed << ": " << v.check << ", " << v.method << ": " << v.detail << "\n" << c.json;
+}
+
+// `exact` hit its cap of 1e6 Gauss-Kronrod panels a ray: a layer of
+// extinction 1e10 inside a cell, its quadrature in t (piece_integrator.cpp).
+TEST(Regression, Seed4ExactOnALayerOfExtinction1e10) { expect_no_violation(4); }
+// The same with every point at one scalar (a step from 1e9 to 3e10).
+TEST(Regression, Seed5ExactOnAStepOfExtinction3e10) { expect_no_violation(5); }
+// `adaptive --strategy coupled` gave NaN: the quartic depth dipped below
+// zero and e^{+708} times tau overflowed (simpson_colour_step.cpp).
+TEST(Regression, Seed13CoupledAdaptiveAtExtremeExtinction) { expect_no_violation(13); }
+
+}  // namespace
+}  // namespace vri::verify
