@@ -33,8 +33,11 @@ void SceneFlags::add_to(CLI::App* cmd) {
   cmd->add_flag("--double", double_math,
                 "riemann, preint1, preint2, preint2-dual: sample, look up and composite in double (the reference of "
                 "their float paths)");
+  // The scene's range for the seed (0 .. 2^53), checked on the text: a
+  // negative number would wrap to a huge unsigned one (issue 47).
   cmd->add_option("--jitter", o.jitter,
-                  "riemann: move each pixel's samples by a seeded random share of a step (against wood-grain rings)");
+                  "riemann: move each pixel's samples by a seeded random share of a step (against wood-grain rings)")
+      ->check(CLI::Range(0.0, 9007199254740992.0));
   cmd->add_option("--width", o.width, "Image width in pixels");
   cmd->add_option("--height", o.height, "Image height in pixels");
   cmd->add_flag("--fit", fit, "Frame the volume's box (as ParaView's reset camera), then apply the motions");

@@ -26,15 +26,17 @@ struct Piece {
   }
 };
 
-// The optical depth from a0, D(u) = integral of tau over [a0, a0 + u], a
-// quartic in u taken about a0, so that its rounding is relative to D itself:
-// the difference P(t) - P(a0) of one quartic about the cell's start cancelled,
-// and at extinctions of thousands its noise outgrew the error budget and the
-// ray the panel cap (issue 46).
+// tau and the optical depth from a0, D(u) = integral of tau over
+// [a0, a0 + u], as polynomials in u taken about a0, so that their rounding
+// is relative to what they are near a0: the difference P(t) - P(a0) of one
+// quartic about the cell's start cancelled, and so did tau's terms of 1e11
+// where a spike rises from 0; at extinctions of thousands their noise
+// outgrew the error budget and the ray the panel cap (issue 46).
 struct DepthFrom {
   double d[4];  // tau(a0 + u) = d0 + d1 u + d2 u^2 + d3 u^3
   DepthFrom(const Cubic& tau, double a0)
       : d{tau(a0), tau.derivative(a0), tau.c[2] + 3 * tau.c[3] * a0, tau.c[3]} {}
+  double tau(double u) const { return ((d[3] * u + d[2]) * u + d[1]) * u + d[0]; }
   double operator()(double u) const { return (((0.25 * d[3] * u + d[2] / 3) * u + 0.5 * d[1]) * u + d[0]) * u; }
   // The u in [0, len] where the depth first reaches `depth` (bisection; D
   // grows, tau >= 0), given that it does by len.
@@ -96,7 +98,7 @@ void PieceIntegrator::integrate(const Cubic& s, double len, double error_per_len
       // from leaving that range. exp(...) <= 1: optical depth only grows.
       auto f = [&](double u, double (&out)[3]) {
         const double t = a0 + u, ds = s(t) - seg.s_ref;
-        const double w = std::max(pc.tau(t), 0.0) * std::exp(-std::max(depth(u), 0.0));
+        const double w = std::max(depth.tau(u), 0.0) * std::exp(-std::max(depth(u), 0.0));
         const auto terms = lit ? lit->shader->terms({lit->grad[0](t), lit->grad[1](t), lit->grad[2](t)}, lit->dir)
                                : HeadlightShader::Terms{1, 0};
         out[0] = (std::clamp(seg.ref.r + seg.slope.r * ds, 0.0, 1.0) * terms.a + terms.b) * w;

@@ -296,6 +296,11 @@ CameraRequest camera_from(const json& j, const Reader& top) {
   else if (proj == "orthographic") c.projection = Projection::Orthographic;
   else r.expected("projection", "perspective or orthographic", j.at("projection"));
   if (c.projection == Projection::Orthographic && !q.fit) c.ortho_height = r.number(j, "ortho_height");
+  // Checked whatever the projection: a perspective camera ignores it, but a
+  // bad value is a mistake to say (issue 47).
+  if (j.contains("ortho_height"))
+    if (const double h = r.number(j, "ortho_height"); !(h > 0) || !std::isfinite(h))
+      r.expected("ortho_height", "a positive number", j.at("ortho_height"));
   q.azimuth = r.number(j, "azimuth", 0.0);
   q.elevation = r.number(j, "elevation", 0.0);
   q.roll = r.number(j, "roll", 0.0);
@@ -417,6 +422,9 @@ Scene scene_from(std::string_view text, const fs::path& base, const std::string&
   Vec3 background{0, 0, 0};
   if (j.contains("background")) {
     const auto b = r.numbers(j.at("background"), "background", 3);
+    // As --background: a colour (issue 47: [1e300, -5, 0.5] was taken).
+    if (!std::all_of(b.begin(), b.end(), [](double x) { return x >= 0 && x <= 1; }))
+      r.expected("background", "three numbers in [0, 1]", j.at("background"));
     background = {b[0], b[1], b[2]};
   }
 

@@ -17,19 +17,39 @@ constexpr double kX[kG] = {(1 - 0.9324695142031521) / 2, (1 - 0.6612093864662645
 constexpr double kW[kG] = {0.1713244923791704 / 2, 0.3607615730481386 / 2, 0.4679139345726910 / 2,
                            0.4679139345726910 / 2, 0.3607615730481386 / 2, 0.1713244923791704 / 2};
 
-// int_0^1 exp(-x (a + k x)) dx for a thick piece: panels of optical depth <= 1,
-// stopping where the depth reaches 50 (the rest is below e^-50).
+// The optical depths at which transmittance_integral's panels end: half a
+// depth each up to 4 (where tau rises from 0 the integrand is e^{-k x^2},
+// whose first panel sets the error: 2e-13 against erf's closed form), then
+// wider as what is left weighs less (a panel from depth d0 that adds w errs
+// by about 2e-16 w^13 e^-d0 of the integral), to 50, past which the rest is
+// below e^-50. 22 panels where uniform ones, one a depth by the largest rate,
+// took up to 50 and more: tables of extinctions of 1e9 build several times
+// faster (preint1 on a 12 x 12 view of such a case: 2.3 s to 0.24 s).
+constexpr double kPanelDepths[] = {0.5, 1, 1.5, 2, 2.5, 3, 3.5, 4, 5, 6, 7, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40, 50};
+
+// int_0^1 exp(-x (a + k x)) dx for a thick piece: one panel between each
+// two of kPanelDepths (the depth is quadratic in x, so a panel's depth grows
+// by exactly their difference), up to x = 1.
 double transmittance_integral(double a, double k) {
-  const double x_max = reach_of_depth(a, k, 50);
-  const int panels = panel_count(a, k, x_max, 1);
-  const double w = x_max / panels;
-  double sum = 0;
-  for (int p = 0; p < panels; ++p)
+  // Dense from the start, with the quadratic term small over the layer the
+  // light comes from (|k| <= 3e-7 a^2): the integral over x >= 0 in closed
+  // form, 1/a - 2k/a^3 + 12k^2/a^5, relatively within 1e-17 (the next term
+  // is 120 (k/a^2)^3), past x = 1 lies less than e^-50.
+  if (a > 50 && std::abs(k) <= 3e-7 * a * a) {
+    const double r = k / (a * a);
+    return (1 - 2 * r * (1 - 6 * r)) / a;
+  }
+  double sum = 0, x0 = 0;
+  for (double depth : kPanelDepths) {
+    const double x1 = reach_of_depth(a, k, depth), w = x1 - x0;
     for (int g = 0; g < kG; ++g) {
-      const double x = (p + kX[g]) * w;
-      sum += kW[g] * std::exp(-x * (a + k * x));
+      const double x = x0 + kX[g] * w;
+      sum += w * kW[g] * std::exp(-x * (a + k * x));
     }
-  return sum * w;
+    if (x1 >= 1) break;
+    x0 = x1;
+  }
+  return sum;
 }
 
 }  // namespace

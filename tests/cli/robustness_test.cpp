@@ -67,6 +67,19 @@ TEST(CliRobustness, AFifoIsRefusedNotWaitedOn) {
   expect_refused("render " + tf_scene + " -o " + (dir / "out.npy").string(), "not a regular file", dir);
 }
 
+// Issue 47, defect 12: one check per parameter wherever it is given.
+TEST(CliRobustness, BackgroundOrthoHeightAndJitterAreCheckedEverywhere) {
+  test::TempDir dir;
+  const std::string out = " -o " + (dir / "out.npy").string();
+  std::string scene = scene_with(dir, replaced(test::kGoodScene, R"("method":)", R"("background": [1e300, -5, 0.5], "method":)"));
+  expect_refused("render " + scene + out, "background", dir);
+  scene = scene_with(dir, replaced(test::kGoodScene, R"("width": 16)", R"("ortho_height": -3, "width": 16)"));
+  expect_refused("render " + scene + out, "ortho_height", dir);
+  scene = scene_with(dir, test::kGoodScene);
+  expect_refused("render " + scene + out + " --method riemann --jitter -1", "--jitter", dir);
+  EXPECT_EQ(run("render " + scene + out + " --method riemann --jitter 7", dir).code, 0);
+}
+
 TEST(CliRobustness, RayStepMustBeFinite) {  // defect 4
   test::TempDir dir;
   const std::string scene = scene_with(dir, test::kGoodScene);

@@ -2,12 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
 
 #include "random_tf.hpp"
 #include "vri/tables/brute_builder.hpp"
+#include "vri/tables/piece_weights.hpp"
 
 namespace vri {
 namespace {
@@ -218,6 +220,36 @@ TEST(ExactSlab, TableScalarsAreTheirSamplesBitForBit) {
   const DiscreteTf step(TransferFunction({{0, 0, 0, 0, 0}, {2, 0, 0, 0, 0}, {2, 1, 1, 1, 5}, {4, 1, 1, 1, 5}}), 5);
   EXPECT_EQ(step[2].tau, 5);
   EXPECT_EQ(step.at_index(2).tau, step[2].tau);
+}
+
+// Thick pieces (issue 46: extinctions of 1e9 built tables slowly): the
+// graded panels and, where the piece is dense from its start, the closed
+// form, against J integrated apart here (composite Simpson on 20 000 panels
+// up to depth 60, where the rest is below e^-60).
+TEST(ThickPieceWeights, MatchAnIntegralTakenApart) {
+  auto J = [](double A, double B) {
+    const double k = 0.5 * (B - A);
+    double x_end = 1;
+    if (A + k > 60) x_end = 2 * 60 / (A + std::sqrt(A * A + 4 * k * 60));
+    const int n = 20000;
+    const double h = x_end / n;
+    double s = 0;
+    for (int i = 0; i <= n; ++i) {
+      const double x = i * h, f = std::exp(-x * (A + k * x));
+      s += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * f;
+    }
+    return s * h / 3;
+  };
+  for (const auto& ab : {std::array{2.0, 3.0}, {0.0, 40.0}, {60.0, 61.0}, {1e3, 1.2e3}, {1e3, 5e3}, {1e6, 1e6 + 1},
+                         {1e9, 2e9}, {1e9, 1e9}, {4e3, 0.0}, {0.0, 4e3}, {1e12, 3e12}}) {
+    const PieceWeights w = thick_piece_weights(ab[0], ab[1]);
+    const double E = std::exp(-0.5 * (ab[0] + ab[1]));
+    const double jf = J(ab[0], ab[1]), jb = J(ab[1], ab[0]);
+    EXPECT_NEAR(w.fp, 1 - jf, 1e-12 * std::max(1.0, jf)) << ab[0] << " " << ab[1];
+    EXPECT_NEAR(w.fq, jf - E, 1e-11 * jf + 1e-15) << ab[0] << " " << ab[1];
+    EXPECT_NEAR(w.bq, 1 - jb, 1e-12 * std::max(1.0, jb)) << ab[0] << " " << ab[1];
+    EXPECT_NEAR(w.bp, jb - E, 1e-11 * jb + 1e-15) << ab[0] << " " << ab[1];
+  }
 }
 
 }  // namespace

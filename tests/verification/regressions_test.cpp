@@ -19,6 +19,13 @@ void expect_no_violation(std::uint64_t seed) {
 TEST(Regression, Seed4ExactOnALayerOfExtinction1e10) { expect_no_violation(4); }
 // The same with every point at one scalar (a step from 1e9 to 3e10).
 TEST(Regression, Seed5ExactOnAStepOfExtinction3e10) { expect_no_violation(5); }
+// `exact` at its panel cap again: a spike of extinction 7e10 rising from 0
+// inside a cell, tau's own terms of 1e11 cancelling in t.
+TEST(Regression, Seed83ExactOnASpikeRisingFromZero) { expect_no_violation(83); }
+// The independent reference at a fixed 0.01 voxel was 1.9e-3 from `exact`
+// under 500 points over the range; it now halves its intervals where the
+// scalar bends (reference_integral.hpp).
+TEST(Regression, Seed91FiveHundredPointsAgainstTheReference) { expect_no_violation(91); }
 // `adaptive --strategy coupled` gave NaN: the quartic depth dipped below
 // zero and e^{+708} times tau overflowed (simpson_colour_step.cpp).
 TEST(Regression, Seed13CoupledAdaptiveAtExtremeExtinction) { expect_no_violation(13); }

@@ -1,9 +1,10 @@
 // vri-verify: the verification campaign (issue 46, docs/VERIFICATION.md).
-//   vri-verify [--first SEED] [--cases N] [--report FILE.md] [--list K]
+//   vri-verify [--first SEED] [--cases N] [--report FILE.md] [--list K] [--scenes]
 // generates cases SEED .. SEED+N-1 (case_generator.hpp), runs every check of
 // case_checks.hpp on each, prints the violations per check and per family and
 // writes them as Markdown to FILE.md; exits 1 if any check other than the
-// ones named with --open (known open classes) was violated.
+// ones named with --open (known open classes) was violated. --scenes prints
+// each case's scene (JSON, one a line) instead, to replay with `vri render`.
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
   std::string report;
   std::set<std::string> open;
   std::size_t list = 5;
+  bool scenes = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -51,10 +53,15 @@ int main(int argc, char** argv) {
     else if (a == "--report") report = value();
     else if (a == "--open") open.insert(value());
     else if (a == "--list") list = std::stoul(value());
+    else if (a == "--scenes") scenes = true;
     else {
       std::fprintf(stderr, "vri-verify: unknown argument '%s'\n", a.c_str());
       return 2;
     }
+  }
+  if (scenes) {
+    for (long k = 0; k < cases; ++k) std::printf("%s\n", vri::verify::make_case(first + std::uint64_t(k)).json.c_str());
+    return 0;
   }
   Tally t;
   const auto start = std::chrono::steady_clock::now();

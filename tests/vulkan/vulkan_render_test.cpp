@@ -38,20 +38,22 @@ std::vector<std::string> scenes(bool gpu) {
   return out;
 }
 
+// A bundled scene at 48 x 40 with `method` at `step`.
+Scene small_scene(const std::string& file, const char* method, double step) {
+  Scene scene = load_scene(test::source_path("scenes/" + file));
+  SceneOverrides o;
+  o.method = method;
+  o.width = 48;
+  o.height = 40;
+  o.step = step;
+  apply_overrides(scene, o);
+  return scene;
+}
+
 class VulkanScene : public ::testing::TestWithParam<std::string> {
  protected:
-  // The bundled scene at 48 x 40 with `method` at step 0.7 (the last step or
-  // slab of most rays is partial).
-  Scene scene_with(const char* method) const {
-    Scene scene = load_scene(test::source_path("scenes/" + GetParam()));
-    SceneOverrides o;
-    o.method = method;
-    o.width = 48;
-    o.height = 40;
-    o.step = 0.7;
-    apply_overrides(scene, o);
-    return scene;
-  }
+  // At step 0.7: the last step or slab of most rays is partial.
+  Scene scene_with(const char* method) const { return small_scene(GetParam(), method, 0.7); }
 
   // `method` (a pre-integrated one) with a table of `table_size` a side
   // against the CPU: plain, with early termination and, lit, in the other
@@ -163,13 +165,7 @@ INSTANTIATE_TEST_SUITE_P(GridScenes, VulkanScene, ::testing::ValuesIn(scenes(tru
 TEST(VulkanBackend, EarlyTerminationStopsWhereTheCpuStops) {
   for (const char* method : {"riemann", "preint1", "preint2", "preint2-dual"})
     for (double termination : {0.99, 0.7, 0.3}) {
-      Scene scene = load_scene(test::source_path("scenes/neghip.json"));
-      SceneOverrides o;
-      o.method = method;
-      o.width = 48;
-      o.height = 40;
-      o.step = 0.5;
-      apply_overrides(scene, o);
+      Scene scene = small_scene("neghip.json", method, 0.5);
       scene.method.fast.termination = termination;
       EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << method << " at " << termination;
     }

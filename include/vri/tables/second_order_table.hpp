@@ -82,8 +82,8 @@ void check_iterations(int iterations);
 // the first-order slab from f to b. Builders whose chords are lookups (fast,
 // on the CPU and the GPU) were up to 0.38 from it at steps and spikes
 // narrower than a bin, the more the more chords (issue 46): they overwrite
-// these N^2 / 2 entries with second_order_entry, the definition (`plain`'s
-// bytes there; exact to rounding, the chords of a line composing to it).
+// these N^2 / 2 entries with the slab itself, from the incremental table of
+// the whole length (to 1e-9; the chords of `plain` compose to it).
 void write_straight_entries(const DiscreteTf& tf, SecondOrderTable& table);
 
 struct SecondOrderWeightedTables;  // second_order_weighted.hpp
