@@ -59,7 +59,8 @@ GuaranteedAdaptiveIntegrator::GuaranteedAdaptiveIntegrator(const GridVolume& vol
       zero_(tf),
       margin_(interpolation_margin(volume)),
       zero_bins_(zero_, volume.min_value() - margin_, volume.max_value() + margin_),
-      skipping_(volume, zero_, FastPath{}, "adaptive") {
+      skipping_(volume, zero_, FastPath{}, "adaptive"),
+      dense_(tf) {
   params.validate();
   if (lighting.enabled) shader_.emplace(lighting, volume);
   hmax_ = params.hmax * volume.voxel_unit();
@@ -152,6 +153,25 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
   auto piece_cap = [&](const Cubic& s, const TfSegment& seg, double x, double y) {
     return std::max(hfloor_, std::min(hmax_, step_cap(s, seg, x, y)));
   };
+  // A piece whose cap lies under the floor: no accepted step could resolve
+  // it, so `exact`'s quadrature takes it (PieceIntegrator, about x), with the
+  // gradient's cubics about x too where lit.
+  auto dense = [&](const Cubic& s, const TfSegment& seg, double x, double y) {
+    return step_cap(s, seg, x, y) < hfloor_;
+  };
+  auto integrate_dense = [&](const Cubic& s, double ta, double x, double y) {
+    PieceIntegrator::Accumulator acc;
+    acc.T = T;
+    std::copy(C, C + 3, acc.C);
+    const Cubic grad_x[3] = {shifted(grad[0], x), shifted(grad[1], x), shifted(grad[2], x)};
+    const PieceIntegrator::Lit lit{shader_ ? &*shader_ : nullptr, grad_x, ray.dir, nullptr, 0};
+    dense_.integrate(shifted(s, x), y - x, colour_density, acc, shader_ ? &lit : nullptr);
+    stats.evaluations += 15 * acc.panels;
+    for (int c = 0; c < 4; ++c) stats.error_estimate[c] += T * colour_density * (y - x);
+    T = acc.T;
+    std::copy(acc.C, acc.C + 3, C);
+    if (stats.record_steps) stats.steps.push_back({true, ta + x, y - x, 1 - T});
+  };
 
   // Unlit, up to four pieces wait here and their first tries are made
   // together (guaranteed_tries.hpp). An accepted first try is added from
@@ -192,6 +212,11 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
   // for their first tries.
   const auto split_unlit = [&](const Cubic& s, double ta, double len) {
     splitter_->split(s, len, [&](double x, double y, const TfSegment& seg) {
+      if (dense(s, seg, x, y)) {  // after the pieces in front of it
+        flush();
+        if (T > cutoff) integrate_dense(s, ta, x, y);
+        return;
+      }
       const double hcap = piece_cap(s, seg, x, y);
       tries.set(npending, s, seg, x, std::min(y - x, hcap));
       pending[npending++] = {s, &seg, ta, x, y, hcap};
@@ -235,6 +260,10 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
     double kinks[3];
     const int nkinks = gradient_along(shader_->gradients(), cs, ray.dir, grad, kinks);
     splitter_->split(s, cs.tb - cs.ta, [&](double x, double y, const TfSegment& seg) {
+      if (dense(s, seg, x, y)) {
+        if (T > cutoff) integrate_dense(s, cs.ta, x, y);
+        return;
+      }
       for (int k = 0; k < nkinks; ++k)
         if (kinks[k] > x && kinks[k] < y) {
           integrate_piece(s, seg, cs.ta, x, kinks[k], piece_cap(s, seg, x, kinks[k]));

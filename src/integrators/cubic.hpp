@@ -40,6 +40,11 @@ Cubic trilinear_along(const GridVolume& vol, const CellSegment& seg);
 // a * p + b * q
 Cubic combine(double a, const Cubic& p, double b, const Cubic& q);
 
+// The same cubic about x: shifted(c, x)(u) = c(x + u).
+inline Cubic shifted(const Cubic& c, double x) {
+  return {{c(x), c.derivative(x), c.c[2] + 3 * c.c[3] * x, c.c[3]}};
+}
+
 // The roots of the cubic strictly inside (0, len) where it changes sign,
 // ascending; returns how many (0..3).
 int sign_changes(const Cubic& s, double len, double out[3]);

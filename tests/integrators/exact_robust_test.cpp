@@ -130,7 +130,7 @@ TEST(ExactRobust, HugeSpecularOnAVaryingNormalIsLinearInKs) {
 // transfer function's colour where the ray turns opaque.
 TEST(ExactRobust, ExtremeExtinctionGivesTheColourWhereTheRayTurnsOpaque) {
   const auto vol = ramp();
-  for (double tau : {1e4, 1e8, 1e12, 1e15, 1e30}) {
+  for (double tau : {1e4, 1e8, 1e12, 1e15, 1e30, 1e300}) {
     const TransferFunction tf({{-5, 0.3, 0.6, 0.9, 0}, {0, 0.3, 0.6, 0.9, 0}, {0, 0.2, 0.4, 0.8, tau},
                                {5, 0.7, 0.1, 0.5, tau}});
     for (double tolerance : {1e-6, 1e-9}) {

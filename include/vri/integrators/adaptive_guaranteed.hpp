@@ -45,6 +45,7 @@
 #include "vri/integrators/adaptive_params.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
 #include "vri/integrators/fast_path.hpp"
+#include "vri/integrators/piece_integrator.hpp"
 #include "vri/shading/headlight_shader.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
@@ -81,6 +82,11 @@ class GuaranteedAdaptiveIntegrator final : public ErrorEstimatingIntegrator {
   // The cells of the non-empty macro cells that zero_bins_ finds
   // transparent, classified once (with skipping on).
   std::optional<TransparentCells> transparent_;
+  // Pieces too dense for any step over the floor (step_cap below it:
+  // extinctions of 1e8 and more) are integrated as `exact` integrates them,
+  // to the same error density (issue 46: the floor overrode the cap, 30 % of
+  // pixels over at 1e8, errors up to 0.9).
+  PieceIntegrator dense_;
 };
 
 }  // namespace vri
