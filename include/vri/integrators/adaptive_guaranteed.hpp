@@ -14,7 +14,8 @@
 //    the same five samples, and a step is accepted only when both meet their
 //    share of the budget, with the paper's step control (Algorithm 2) inside
 //    each piece, starting from the whole piece, at most hmax, with no hmin
-//    (a floor of 1e-4 voxel units only guarantees termination);
+//    (a floor of 1e-4 voxel units only guarantees termination; a piece too
+//    dense for any step over it goes to `exact`'s PieceIntegrator);
 //  - the tolerance is shared along the ray and between the integrals: with L
 //    the ray's length in the volume, a step of length h may err by
 //    0.45 tol h / L in colour and by 0.45 tol h / (L T) in optical depth (an
