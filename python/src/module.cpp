@@ -4,6 +4,7 @@
 #include "bindings.hpp"
 #include "vri/render/backend.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 
 namespace vri::python {
 
@@ -13,9 +14,9 @@ void bind_errors(py::module_&) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const FileError& e) {
-      PyErr_SetString(PyExc_OSError, e.what());
+      PyErr_SetString(PyExc_OSError, message_line(e.what()).c_str());
     } catch (const Error& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      PyErr_SetString(PyExc_ValueError, message_line(e.what()).c_str());
     }
   });
 }

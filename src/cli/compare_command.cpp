@@ -59,7 +59,7 @@ Runner add_compare_command(CLI::App& app) {
     try {
       return run_compare(*args);
     } catch (const std::exception& e) {
-      std::cerr << "vri: error: " << e.what() << "\n";
+      std::cerr << "vri: error: " << message_line(e.what()) << "\n";
       return 2;
     }
   };

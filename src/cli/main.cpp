@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 #include "vri/core/memory_limit.hpp"
 #include "vri/io/output_transaction.hpp"
 #include "vri/version.hpp"
@@ -52,7 +53,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // Subcommand help comes through here too.
     if (e.get_exit_code() == 0) return app.exit(e);
-    std::cerr << "vri: error: " << e.what() << " (see vri --help)\n";
+    std::cerr << "vri: error: " << vri::message_line(e.what()) << " (see vri --help)\n";
     return 2;
   }
   vri::remove_temporaries_on_signal();
@@ -72,11 +73,11 @@ int main(int argc, char** argv) {
     if (code == 0) outputs.commit();
     return code;
   } catch (const vri::Error& e) {
-    std::cerr << "vri: error: " << e.what() << "\n";
+    std::cerr << "vri: error: " << vri::message_line(e.what()) << "\n";
   } catch (const std::bad_alloc&) {
     std::cerr << "vri: error: out of memory\n";
   } catch (const std::exception& e) {
-    std::cerr << "vri: error: " << e.what() << "\n";
+    std::cerr << "vri: error: " << vri::message_line(e.what()) << "\n";
   }
   return 1;
 }

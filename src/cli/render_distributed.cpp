@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 
 #ifdef VRI_DISTRIBUTED
 #include <algorithm>
@@ -99,7 +100,7 @@ int run_render_distributed(const DistributedJob& job) {
     // One line, from rank 0, naming the rank that failed; the others wait
     // until it is out: mpirun ends the job at the first non-zero exit, which
     // could otherwise come before rank 0 has written it.
-    if (world.rank() == 0) std::cerr << "vri: error: " << e.what() << std::endl;
+    if (world.rank() == 0) std::cerr << "vri: error: " << message_line(e.what()) << std::endl;
     MPI_Barrier(world.comm());
     return 1;
   }

@@ -5,6 +5,7 @@
 
 #include "core/json_support.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 
 namespace vri::viewer {
 
@@ -100,7 +101,7 @@ std::int64_t seq_of(std::string_view text) {
 
 std::string error_message(std::int64_t seq, const std::string& message) {
   // dump() with replacement: a message quoting the client's bytes stays valid UTF-8.
-  return json{{"type", "error"}, {"seq", seq}, {"message", message}}.dump(-1, ' ', false,
+  return json{{"type", "error"}, {"seq", seq}, {"message", message_line(message)}}.dump(-1, ' ', false,
                                                                           json::error_handler_t::replace);
 }
 

@@ -99,6 +99,14 @@ TEST(Protocol, ErrorRepliesAreJsonEvenForBadBytes) {
   EXPECT_EQ(reply["seq"], 3);
 }
 
+// Issue 47, defects 4 and 10: an error reply quoting the client's input is
+// one short line, not up to 256 KiB of it.
+TEST(Protocol, ErrorRepliesAreCapped) {
+  const std::string reply = error_message(3, "unknown message type '" + std::string(200000, 'x') + "\n'");
+  EXPECT_LT(reply.size(), 1100u);
+  EXPECT_EQ(nlohmann::json::parse(reply)["seq"], 3);
+}
+
 TEST(Protocol, FramesCarryTheirHeaderLengthLittleEndian) {
   const nlohmann::json header = {{"type", "frame"}, {"seq", 5}};
   const std::vector<std::byte> image = {std::byte{0x89}, std::byte{'P'}};
