@@ -37,7 +37,17 @@ int error_handler(TIFF*, void* user, const char* module, const char* fmt, va_lis
   return 1;  // handled: libtiff's global handler (stderr) is not called
 }
 
-int warning_handler(TIFF*, void*, const char*, const char*, va_list) { return 1; }
+// Warnings are dropped, but libtiff's "Bogus StripByteCounts field,
+// ignoring and calculating from imagelength" (or TileByteCounts) is noted.
+int warning_handler(TIFF*, void* user, const char*, const char* fmt, va_list ap) {
+  char text[512];
+  std::vsnprintf(text, sizeof text, fmt, ap);
+  const std::string message = text;
+  if (user && message.find("ByteCounts") != std::string::npos &&
+      (message.find("Bogus") != std::string::npos || message.find("ignoring") != std::string::npos))
+    static_cast<Handle::State*>(user)->counts_replaced = true;
+  return 1;
+}
 
 void global_error_handler(const char* module, const char* fmt, va_list ap) { keep(current, module, fmt, ap); }
 
@@ -87,7 +97,7 @@ struct Options {
     const std::uint64_t cap = std::min<std::uint64_t>(memory_limit(), std::uint64_t(std::numeric_limits<tmsize_t>::max()));
     TIFFOpenOptionsSetMaxSingleMemAlloc(opts, tmsize_t(cap));
     TIFFOpenOptionsSetErrorHandlerExtR(opts, error_handler, state);
-    TIFFOpenOptionsSetWarningHandlerExtR(opts, warning_handler, nullptr);
+    TIFFOpenOptionsSetWarningHandlerExtR(opts, warning_handler, state);
   }
   ~Options() { TIFFOpenOptionsFree(opts); }
   Options(const Options&) = delete;

@@ -197,6 +197,19 @@ TEST(TiffVolume, CraftedFilesAreValid) {
   EXPECT_EQ(v.at(0, 1, 1), 10);
 }
 
+// Issue 47, defect 11: a strip whose byte count is shorter than its samples
+// was read on into the next page's bytes, and rendered with exit 0.
+TEST(TiffVolume, RefusesAStripShorterThanItsSamples) {
+  const std::vector<std::uint8_t> data{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
+  const std::string m = expect_error(
+      [&] { parse_tiff_volume(crafted_tiff({{3, 2, 8, 1, 8, 3}, {3, 2, 8, 1, 14}}, data), "short.tif"); },
+      "TIFF 'short.tif'");
+  EXPECT_NE(m.find("page 0: its strip or tile byte counts are shorter than its samples"), std::string::npos) << m;
+  // The second page's count short too.
+  expect_error([&] { parse_tiff_volume(crafted_tiff({{3, 2}, {3, 2, 8, 1, 14, 5}}, data), "short2.tif"); },
+               "byte counts are shorter than its samples");
+}
+
 TEST(TiffVolume, RefusesWhatIsNotAGreyStack) {
   const auto refuse = [](const std::string& name, const std::string& fragment) {
     const std::string m = expect_error([&] { read_tiff_volume(volume_fixture(name)); }, fragment);
