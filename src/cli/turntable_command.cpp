@@ -21,6 +21,7 @@
 #include "video_writer.hpp"
 #include "vri/camera/framing.hpp"
 #include "vri/core/error.hpp"
+#include "vri/io/output_transaction.hpp"
 #include "vri/io/file_io.hpp"
 #include "vri/io/png.hpp"
 #include "vri/render/render_checks.hpp"  // checked_threads
@@ -82,7 +83,8 @@ int run_turntable(const TurntableArgs& args) {
     const std::vector<std::byte> bytes = writer->finish();
     write_file_atomically(out, bytes);
   } else {
-    fs::create_directories(out);
+    if (OutputTransaction* outputs = OutputTransaction::active()) outputs->create_directories(out);
+    else fs::create_directories(out);
     for (int i = 0; i < args.frames; ++i) write_file_atomically(out / frame_name(i, args.frames), pngs[i]);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <csignal>
 #include <cerrno>
 #include <cstring>
 #include <string>
@@ -148,6 +149,18 @@ void OutputTransaction::stage(const fs::path& target, std::span<const std::span<
   if (::close(fd) != 0) fail(target, std::strerror(errno));
 }
 
+void OutputTransaction::create_directories(const fs::path& dir) {
+  std::vector<fs::path> missing;
+  std::error_code ec;
+  for (fs::path p = dir; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    missing.push_back(p);
+    if (p == p.parent_path()) break;
+  }
+  fs::create_directories(dir, ec);
+  if (ec) fail(dir, ec.message());
+  created_.insert(created_.end(), missing.begin(), missing.end());  // deepest first
+}
+
 void OutputTransaction::commit() {
   while (!staged_.empty()) {
     const Staged s = staged_.front();
@@ -157,6 +170,7 @@ void OutputTransaction::commit() {
     unregister_temp(s.temp);
     staged_.erase(staged_.begin());
   }
+  created_.clear();  // they hold the outputs now
 }
 
 void OutputTransaction::discard() noexcept {
@@ -165,6 +179,8 @@ void OutputTransaction::discard() noexcept {
     unregister_temp(s.temp);
   }
   staged_.clear();
+  for (const fs::path& dir : created_) ::rmdir(dir.c_str());  // only if empty
+  created_.clear();
 }
 
 void remove_temporaries_on_signal() {
@@ -174,6 +190,7 @@ void remove_temporaries_on_signal() {
   sa.sa_flags = SA_RESETHAND;
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 }  // namespace vri

@@ -82,6 +82,21 @@ TEST(OutputSafety, ANonRegularFileAtTheTargetIsNeverReplaced) {
   EXPECT_FALSE(fs::exists(dir / "a.npy"));
 }
 
+// Issue 47, defect 11: a write past the file-size limit (SIGXFSZ) killed vri
+// with its temporary left, and a turntable that failed left an empty frames
+// folder.
+TEST(OutputSafety, TheFileSizeLimitFailsCleanly) {
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, test::kGoodScene);
+  ProcessResult r = run("render " + scene + " -o " + (dir / "out.npy").string(), dir, "ulimit -f 1; ");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  r = run("turntable " + scene + " -o " + (dir / "frames").string() + " --frames 3 -q --width 64 --height 64", dir,
+          "ulimit -f 1; ");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(listing(dir.path), (std::vector<std::string>{"scene.json", "stderr.txt", "stdout.txt"}));
+}
+
 TEST(OutputSafety, ALinkAtTheTemporaryNameIsNotFollowed) {  // defect 8
   test::TempDir dir;
   test::write_text(dir / "victim.txt", "keep");

@@ -28,6 +28,10 @@ class OutputTransaction {
   // Renames every staged temporary onto its target; throws vri::Error (and
   // removes the temporaries not yet renamed) if one cannot be.
   void commit();
+  // Creates the folder `dir` (and its missing parents) for outputs staged in
+  // it; without a commit they are removed again, once empty (a turntable
+  // that failed left an empty frames folder, issue 47).
+  void create_directories(const std::filesystem::path& dir);
 
   // The active transaction of this process, or nullptr.
   static OutputTransaction* active();
@@ -37,12 +41,15 @@ class OutputTransaction {
     std::filesystem::path temp, target;
   };
   std::vector<Staged> staged_;
+  std::vector<std::filesystem::path> created_;  // folders made here, deepest first
   OutputTransaction* previous_;
   void discard() noexcept;
 };
 
 // Installs SIGINT/SIGTERM handlers that unlink every temporary still staged,
-// then re-raise the signal with its default action.
+// then re-raise the signal with its default action; ignores SIGXFSZ, so a
+// write past the file-size limit fails (EFBIG) and the transaction cleans up
+// instead of the process dying with its temporaries left.
 void remove_temporaries_on_signal();
 
 }  // namespace vri
