@@ -39,6 +39,12 @@ std::string replaced(std::string s, const std::string& from, const std::string& 
   return s.replace(p, from.size(), to);
 }
 
+// The good scene with its transfer function read from `file`.
+std::string scene_with_tf_file(const test::TempDir& dir, const fs::path& file) {
+  return scene_with(dir, replaced(test::kGoodScene, R"({"points": [[-6, 1, 0.5, 0, 0.5], [0, 0, 0, 1, 0]]})",
+                                  R"({"file": ")" + file.string() + R"("})"));
+}
+
 // Issue 47, defect 6: 100 000 nested brackets in a scene or a transfer
 // function exited 139 (the JSON library's recursive dump, quoting the value).
 TEST(CliRobustness, DeepNestingIsRefusedWithOneLine) {
@@ -48,10 +54,8 @@ TEST(CliRobustness, DeepNestingIsRefusedWithOneLine) {
   expect_refused("render " + scene + " -o " + (dir / "out.npy").string(), "nested deeper than 100 levels", dir);
   const auto tf = dir / "deep_tf.json";
   test::write_text(tf, R"({"points": )" + deep + "}");
-  const std::string tf_scene = scene_with(
-      dir, replaced(test::kGoodScene, R"({"points": [[-6, 1, 0.5, 0, 0.5], [0, 0, 0, 1, 0]]})",
-                    R"({"file": ")" + tf.string() + R"("})"));
-  expect_refused("render " + tf_scene + " -o " + (dir / "out.npy").string(), "nested deeper than 100 levels", dir);
+  expect_refused("render " + scene_with_tf_file(dir, tf) + " -o " + (dir / "out.npy").string(),
+                 "nested deeper than 100 levels", dir);
 }
 
 // Issue 47, defect 11: a FIFO given as scene or transfer function blocked
@@ -61,10 +65,8 @@ TEST(CliRobustness, AFifoIsRefusedNotWaitedOn) {
   const fs::path fifo = dir / "fifo.json";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   expect_refused("render " + fifo.string() + " -o " + (dir / "out.npy").string(), "not a regular file", dir);
-  const std::string tf_scene = scene_with(
-      dir, replaced(test::kGoodScene, R"({"points": [[-6, 1, 0.5, 0, 0.5], [0, 0, 0, 1, 0]]})",
-                    R"({"file": ")" + fifo.string() + R"("})"));
-  expect_refused("render " + tf_scene + " -o " + (dir / "out.npy").string(), "not a regular file", dir);
+  expect_refused("render " + scene_with_tf_file(dir, fifo) + " -o " + (dir / "out.npy").string(), "not a regular file",
+                 dir);
 }
 
 // Issue 47, defect 12: one check per parameter wherever it is given.
