@@ -46,11 +46,15 @@ std::string file_bytes(const std::string& path) {
 }
 
 // The build, the scene file and the command line: equal on every rank of a
-// consistent job (Linux's /proc/self/cmdline holds the arguments).
+// consistent job (Linux's /proc/self/cmdline holds the arguments). Not the
+// program's own name, argv[0]: the same binary reached through a link was
+// refused as another build (issue 47); the build is its version and time.
 std::uint64_t job_fingerprint(const std::string& scene_file) {
   std::uint64_t h = distributed::fingerprint(0, std::string(kVersion) + " " + __DATE__ + " " + __TIME__);
   h = distributed::fingerprint(h, file_bytes(scene_file));
-  return distributed::fingerprint(h, file_bytes("/proc/self/cmdline"));
+  const std::string cmdline = file_bytes("/proc/self/cmdline");
+  const std::size_t arguments = cmdline.find('\0');
+  return distributed::fingerprint(h, arguments == std::string::npos ? std::string() : cmdline.substr(arguments + 1));
 }
 
 }  // namespace

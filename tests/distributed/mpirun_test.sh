@@ -101,6 +101,12 @@ refused "a rank that dies" "signal 9|returned a non-zero exit code" \
   -np 1 "$vri" render "$good" "${out[@]}" --distributed : -np 1 bash -c 'kill -9 $$'
 refused "a mesh scene" "rank 0: distributed rendering takes grid scenes" \
   -np 2 "$vri" render "$src/scenes/blunt_fin.json" "${out[@]}"
+# Issue 47: the same binary reached through a link is the same build.
+ln -s "$vri" "$tmp/vri-link"
+timeout 120 "${mpirun[@]}" -np 1 "$vri" render "$good" "${out[@]}" --distributed : \
+  -np 1 "$tmp/vri-link" render "$good" "${out[@]}" --distributed >"$tmp/log" 2>&1 ||
+  { fail "the same vri through a link was refused:"; cat "$tmp/log"; }
+[ -e "$tmp/out.npy" ] && echo "ok: the same vri through a link renders" || fail "no image through a link"
 # Issue 46: coupled's steps depend on the transmittance in front (1.7e-2 apart on 2 ranks).
 refused "adaptive coupled" "rank 0: adaptive --strategy coupled takes its steps by the transmittance" \
   -np 2 "$vri" render "$good" "${out[@]}" --method adaptive --strategy coupled
