@@ -6,6 +6,7 @@
 #include <string>
 
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 
 namespace vri {
 
@@ -22,12 +23,12 @@ TransferFunction::TransferFunction(std::vector<ControlPoint> points) : points_(s
     const std::string where = "transfer function point " + std::to_string(i);
     if (!std::isfinite(p.s)) throw Error(where + ": s is not finite");
     if (i > 0 && p.s < points_[i - 1].s)
-      throw Error(where + ": s = " + std::to_string(p.s) + " is below the previous point's " +
-                  std::to_string(points_[i - 1].s) + " (points must be sorted by s)");
+      throw Error(where + ": s = " + format_g(p.s) + " is below the previous point's " + format_g(points_[i - 1].s) +
+                  " (points must be sorted by s)");
     for (double c : {p.r, p.g, p.b})
       if (!(c >= 0 && c <= 1)) throw Error(where + ": colour components must be in [0, 1]");
     if (!(p.tau >= 0) || !std::isfinite(p.tau))
-      throw Error(where + ": tau must be finite and >= 0, got " + std::to_string(p.tau));
+      throw Error(where + ": tau must be finite and >= 0, got " + format_g(p.tau));
   }
   // Points closer than kMergeDistance of the scalar range to the first point
   // of their group join it (issue 16): a piece a few ulps wide has a slope no
@@ -67,13 +68,13 @@ TransferFunction TransferFunction::from_opacity(const std::vector<OpacityPoint>&
                                                 double unit_distance) {
   if (!(unit_distance > 0) || !std::isfinite(unit_distance))
     throw Error("transfer function unit_distance must be positive, got " +
-                std::to_string(unit_distance));
+                format_g(unit_distance));
   std::vector<ControlPoint> cps;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];
     if (!(p.a >= 0 && p.a < 1))
       throw Error("transfer function point " + std::to_string(i) +
-                  ": opacity must be in [0, 1), got " + std::to_string(p.a));
+                  ": opacity must be in [0, 1), got " + format_g(p.a));
     cps.push_back({p.s, p.r, p.g, p.b, -std::log1p(-p.a) / unit_distance});
   }
   return TransferFunction(std::move(cps));

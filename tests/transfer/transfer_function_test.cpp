@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include <cmath>
 
 #include "vri/core/error.hpp"
@@ -64,6 +66,23 @@ TEST(TransferFunction, RejectsBadPoints) {
   EXPECT_THROW(TransferFunction::from_opacity({{0, 0, 0, 0, 1.0}}, 1), Error);    // a = 1
   EXPECT_THROW(TransferFunction::from_opacity({{0, 0, 0, 0, -0.5}}, 1), Error);
   EXPECT_THROW(TransferFunction::from_opacity({{0, 0, 0, 0, 0.5}}, 0), Error);    // unit distance
+}
+
+// Issue 47, defect 12: numbers in messages as %g, not "0.000000" or 300 digits.
+TEST(TransferFunction, MessagesShowTheNumbersGiven) {
+  auto message = [](auto&& make) {
+    try {
+      make();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([] { TransferFunction({{2e-7, 0, 0, 0, 1}, {1e-7, 0, 0, 0, 1}}); })
+                .find("s = 1e-07 is below the previous point's 2e-07"),
+            std::string::npos);
+  EXPECT_NE(message([] { TransferFunction({{0, 0, 0, 0, -1e300}}); }).find("got -1e+300"), std::string::npos);
+  EXPECT_NE(message([] { TransferFunction::from_opacity({{0, 0, 0, 0, 1.5}}, 1); }).find("got 1.5"), std::string::npos);
 }
 
 }  // namespace
