@@ -150,15 +150,11 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
 
   // Not below the floor, where every step is accepted anyway: that keeps
   // each step long enough to advance u whatever the cap (1 / huge tau).
-  auto piece_cap = [&](const Cubic& s, const TfSegment& seg, double x, double y) {
-    return std::max(hfloor_, std::min(hmax_, step_cap(s, seg, x, y)));
-  };
-  // A piece whose cap lies under the floor: no accepted step could resolve
-  // it, so `exact`'s quadrature takes it (PieceIntegrator, about x), with the
-  // gradient's cubics about x too where lit.
-  auto dense = [&](const Cubic& s, const TfSegment& seg, double x, double y) {
-    return step_cap(s, seg, x, y) < hfloor_;
-  };
+  // A piece whose cap (step_cap) lies under the floor is dense: no accepted
+  // step could resolve it, so `exact`'s quadrature takes it
+  // (integrate_dense, PieceIntegrator about x, with the gradient's cubics
+  // about x too where lit).
+  auto piece_cap = [&](double cap) { return std::max(hfloor_, std::min(hmax_, cap)); };
   auto integrate_dense = [&](const Cubic& s, double ta, double x, double y) {
     PieceIntegrator::Accumulator acc;
     acc.T = T;
@@ -212,12 +208,13 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
   // for their first tries.
   const auto split_unlit = [&](const Cubic& s, double ta, double len) {
     splitter_->split(s, len, [&](double x, double y, const TfSegment& seg) {
-      if (dense(s, seg, x, y)) {  // after the pieces in front of it
+      const double cap = step_cap(s, seg, x, y);
+      if (cap < hfloor_) {  // dense, after the pieces in front of it
         flush();
         if (T > cutoff) integrate_dense(s, ta, x, y);
         return;
       }
-      const double hcap = piece_cap(s, seg, x, y);
+      const double hcap = piece_cap(cap);
       tries.set(npending, s, seg, x, std::min(y - x, hcap));
       pending[npending++] = {s, &seg, ta, x, y, hcap};
       if (npending == tries.kLanes) flush();
@@ -260,16 +257,17 @@ Rgba GuaranteedAdaptiveIntegrator::integrate_typed(const Value* values, const Ra
     double kinks[3];
     const int nkinks = gradient_along(shader_->gradients(), cs, ray.dir, grad, kinks);
     splitter_->split(s, cs.tb - cs.ta, [&](double x, double y, const TfSegment& seg) {
-      if (dense(s, seg, x, y)) {
+      const double cap = step_cap(s, seg, x, y), x0 = x;
+      if (cap < hfloor_) {  // dense
         if (T > cutoff) integrate_dense(s, cs.ta, x, y);
         return;
       }
       for (int k = 0; k < nkinks; ++k)
         if (kinks[k] > x && kinks[k] < y) {
-          integrate_piece(s, seg, cs.ta, x, kinks[k], piece_cap(s, seg, x, kinks[k]));
+          integrate_piece(s, seg, cs.ta, x, kinks[k], piece_cap(step_cap(s, seg, x, kinks[k])));
           x = kinks[k];
         }
-      integrate_piece(s, seg, cs.ta, x, y, piece_cap(s, seg, x, y));
+      integrate_piece(s, seg, cs.ta, x, y, piece_cap(x == x0 ? cap : step_cap(s, seg, x, y)));
     });
     return T > cutoff;
   };

@@ -33,11 +33,12 @@ struct Piece {
 // where a spike rises from 0; at extinctions of thousands their noise
 // outgrew the error budget and the ray the panel cap (issue 46).
 struct DepthFrom {
-  double d[4];  // tau(a0 + u) = d0 + d1 u + d2 u^2 + d3 u^3
-  DepthFrom(const Cubic& tau, double a0)
-      : d{tau(a0), tau.derivative(a0), tau.c[2] + 3 * tau.c[3] * a0, tau.c[3]} {}
-  double tau(double u) const { return ((d[3] * u + d[2]) * u + d[1]) * u + d[0]; }
-  double operator()(double u) const { return (((0.25 * d[3] * u + d[2] / 3) * u + 0.5 * d[1]) * u + d[0]) * u; }
+  Cubic d;  // tau(a0 + u)
+  DepthFrom(const Cubic& tau, double a0) : d(shifted(tau, a0)) {}
+  double tau(double u) const { return d(u); }
+  double operator()(double u) const {
+    return (((0.25 * d.c[3] * u + d.c[2] / 3) * u + 0.5 * d.c[1]) * u + d.c[0]) * u;
+  }
   // The u in [0, len] where the depth first reaches `depth` (bisection; D
   // grows, tau >= 0), given that it does by len. Up to 2200 halvings: at
   // extinction 1e300 the layer is 1e-299 thick, a thousand halvings of len.
@@ -98,12 +99,13 @@ void PieceIntegrator::integrate(const Cubic& s, double len, double error_per_len
       // u without cancellation. Two points 5e-11 apart make a colour slope of
       // 1e10 per scalar unit, and s(t) at t ~ 0.3 carried noise of 1e-6 into
       // the colour: the panel cap again (seed 227).
-      const double ds0 = s(a0) - seg.s_ref, s1 = s.derivative(a0), s2 = s.c[2] + 3 * s.c[3] * a0, s3 = s.c[3];
+      const Cubic s_a = shifted(s, a0);
+      const double ds0 = s_a.c[0] - seg.s_ref;
       // The segment's values lie between its ends' (tau >= 0, colour in
       // [0, 1]); clamping keeps rounding in s(t) - s_ref, times a steep slope,
       // from leaving that range. exp(...) <= 1: optical depth only grows.
       auto f = [&](double u, double (&out)[3]) {
-        const double t = a0 + u, ds = ds0 + ((s3 * u + s2) * u + s1) * u;
+        const double t = a0 + u, ds = ds0 + ((s_a.c[3] * u + s_a.c[2]) * u + s_a.c[1]) * u;
         const double w = std::max(depth.tau(u), 0.0) * std::exp(-std::max(depth(u), 0.0));
         const auto terms = lit ? lit->shader->terms({lit->grad[0](t), lit->grad[1](t), lit->grad[2](t)}, lit->dir)
                                : HeadlightShader::Terms{1, 0};

@@ -115,32 +115,8 @@ void read_page(const Handle& h, const PageFormat& f, std::span<std::byte> out, c
   // were rendered with exit 0 (issue 47).
   if (h.byte_counts_replaced())
     throw Error(where + ": its strip or tile byte counts are shorter than its samples");
-  // Uncompressed, libtiff reads a strip's or tile's samples at its offset
-  // whatever its byte count says: a count too short for them read on into
-  // the next page's bytes, and rendered them with exit 0 (issue 47).
-  if (h.byte_counts_replaced())
-    throw Error(where + ": its strip or tile byte counts are shorter than its samples");
-  std::uint16_t compression = COMPRESSION_NONE;
-  TIFFGetFieldDefaulted(tif, TIFFTAG_COMPRESSION, &compression);
-  auto check_counts = [&](ttag_t tag, std::uint32_t pieces, const std::function<std::uint64_t(std::uint32_t)>& needed,
-                          const char* what) {
-    if (compression != COMPRESSION_NONE) return;
-    std::uint64_t* counts = nullptr;
-    if (!TIFFGetField(tif, tag, &counts) || !counts) h.fail(where, std::string("has no ") + what + " byte counts");
-    for (std::uint32_t i = 0; i < pieces; ++i)
-      if (counts[i] < needed(i))
-        throw Error(where + ": its " + what + " " + std::to_string(i) + " holds " + std::to_string(counts[i]) +
-                    " bytes where its samples take " + std::to_string(needed(i)));
-  };
   if (!TIFFIsTiled(tif)) {
     if (TIFFScanlineSize64(tif) != row) h.fail(where, "its rows are not " + std::to_string(row) + " bytes");
-    std::uint32_t rows_per_strip = f.height;
-    TIFFGetFieldDefaulted(tif, TIFFTAG_ROWSPERSTRIP, &rows_per_strip);
-    rows_per_strip = std::clamp<std::uint32_t>(rows_per_strip, 1, f.height);
-    check_counts(TIFFTAG_STRIPBYTECOUNTS, TIFFNumberOfStrips(tif), [&](std::uint32_t i) {
-      const std::uint64_t first = std::uint64_t(i) * rows_per_strip;
-      return first >= f.height ? 0 : std::min<std::uint64_t>(rows_per_strip, f.height - first) * row;
-    }, "strip");
     for (std::uint32_t y = 0; y < f.height; ++y)
       if (TIFFReadScanline(tif, out.data() + y * row, y, 0) < 0) h.fail(where, "cannot read row " + std::to_string(y));
     return;
@@ -155,7 +131,6 @@ void read_page(const Handle& h, const PageFormat& f, std::span<std::byte> out, c
   if (tile_bytes > std::max<std::uint64_t>(out.size(), std::uint64_t{64} << 20))
     throw Error(where + ": its tiles of " + std::to_string(tw) + " x " + std::to_string(th) + " samples are far " +
                 "larger than the image");
-  check_counts(TIFFTAG_TILEBYTECOUNTS, TIFFNumberOfTiles(tif), [&](std::uint32_t) { return tile_bytes; }, "tile");
   check_allocation(tile_bytes, "a TIFF tile");
   std::vector<std::byte> tile(tile_bytes);
   for (std::uint64_t ty = 0; ty < f.height; ty += th)
