@@ -2,11 +2,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 #include "vri/core/error.hpp"
 
@@ -14,6 +16,16 @@ namespace vri {
 
 namespace {
 std::atomic<std::uint64_t> g_limit{0};  // 0: the default
+std::atomic<std::uint64_t> g_in_use{0};
+thread_local MemoryAccount* t_account = nullptr;
+
+std::string over_limit(std::uint64_t bytes, const std::string& what, std::uint64_t limit, std::uint64_t held,
+                       const std::string& whose) {
+  std::string m = what + " would need " + format_bytes(bytes) + " (" + std::to_string(bytes) + " bytes), over " +
+                  whose + " of " + format_bytes(limit);
+  if (held) m += " with " + format_bytes(held) + " already held";
+  return m;
+}
 }  // namespace
 
 std::uint64_t default_memory_limit() {
@@ -40,12 +52,59 @@ std::string format_bytes(std::uint64_t bytes) {
   return buf;
 }
 
+std::uint64_t memory_in_use() { return g_in_use.load(std::memory_order_relaxed); }
+
 void check_allocation(std::uint64_t bytes, const std::string& what) {
-  const std::uint64_t limit = memory_limit();
-  if (bytes > limit)
-    throw Error(what + " would need " + format_bytes(bytes) + " (" + std::to_string(bytes) +
-                " bytes), over the memory limit of " + format_bytes(limit) +
+  const std::uint64_t limit = memory_limit(), held = memory_in_use();
+  if (bytes > limit || bytes > limit - std::min(held, limit))
+    throw Error(over_limit(bytes, what, limit, held, "the memory limit") +
                 "; raise it with --max-memory (e.g. --max-memory 64G)");
+  if (const MemoryAccount* a = t_account) {
+    const std::uint64_t mine = a->in_use();
+    if (bytes > a->limit() || bytes > a->limit() - std::min(mine, a->limit()))
+      throw Error(over_limit(bytes, what, a->limit(), mine, a->name()));
+  }
+}
+
+AccountScope::AccountScope(MemoryAccount& account) : previous_(std::exchange(t_account, &account)) {}
+AccountScope::~AccountScope() { t_account = previous_; }
+
+// Check and add in one step per account (compare-exchange), so two threads
+// charging at once cannot both pass a check that only one of them fits.
+MemoryCharge::MemoryCharge(std::uint64_t bytes, const std::string& what) {
+  if (bytes == 0) return;
+  const std::uint64_t limit = memory_limit();
+  std::uint64_t held = g_in_use.load(std::memory_order_relaxed);
+  do {
+    if (bytes > limit || bytes > limit - std::min(held, limit))
+      throw Error(over_limit(bytes, what, limit, held, "the memory limit") +
+                  "; raise it with --max-memory (e.g. --max-memory 64G)");
+  } while (!g_in_use.compare_exchange_weak(held, held + bytes, std::memory_order_relaxed));
+  if (MemoryAccount* a = t_account) {
+    std::uint64_t mine = a->used_.load(std::memory_order_relaxed);
+    do {
+      if (bytes > a->limit() || bytes > a->limit() - std::min(mine, a->limit())) {
+        g_in_use.fetch_sub(bytes, std::memory_order_relaxed);
+        throw Error(over_limit(bytes, what, a->limit(), mine, a->name()));
+      }
+    } while (!a->used_.compare_exchange_weak(mine, mine + bytes, std::memory_order_relaxed));
+    account_ = a;
+  }
+  bytes_ = bytes;
+}
+
+MemoryCharge::MemoryCharge(std::uint64_t count, std::uint64_t size, const std::string& what) {
+  std::uint64_t bytes;
+  if (__builtin_mul_overflow(count, size, &bytes))
+    throw Error(what + " would need more than 2^64 bytes (" + std::to_string(count) + " x " +
+                std::to_string(size) + ")");
+  MemoryCharge(bytes, what).swap(*this);
+}
+
+MemoryCharge::~MemoryCharge() {
+  if (!bytes_) return;
+  g_in_use.fetch_sub(bytes_, std::memory_order_relaxed);
+  if (account_) account_->used_.fetch_sub(bytes_, std::memory_order_relaxed);
 }
 
 void check_allocation(std::uint64_t count, std::uint64_t size, const std::string& what) {

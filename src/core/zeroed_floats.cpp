@@ -30,7 +30,7 @@ std::size_t mapped_bytes(std::size_t count) { return (count * sizeof(float) + kP
 
 ZeroedFloats::ZeroedFloats(std::size_t count, std::string_view what) : size_(count) {
   if (count == 0) return;
-  check_allocation(count, sizeof(float), std::string(what) + " of " + std::to_string(count) + " floats");
+  charge_ = MemoryCharge(count, sizeof(float), std::string(what) + " of " + std::to_string(count) + " floats");
   if (!mapped(count)) {
     data_ = static_cast<float*>(std::calloc(count, sizeof(float)));
     if (!data_) throw Error("out of memory for " + std::to_string(count * sizeof(float)) + " bytes");
@@ -53,11 +53,13 @@ ZeroedFloats::ZeroedFloats(const ZeroedFloats& other) : ZeroedFloats(other.size_
 }
 
 ZeroedFloats::ZeroedFloats(ZeroedFloats&& other) noexcept
-    : data_(std::exchange(other.data_, nullptr)), size_(std::exchange(other.size_, 0)) {}
+    : data_(std::exchange(other.data_, nullptr)), size_(std::exchange(other.size_, 0)),
+      charge_(std::move(other.charge_)) {}
 
 ZeroedFloats& ZeroedFloats::operator=(ZeroedFloats other) noexcept {
   std::swap(data_, other.data_);
   std::swap(size_, other.size_);
+  charge_.swap(other.charge_);
   return *this;
 }
 

@@ -1,6 +1,7 @@
 #include "vri/tables/second_order_exact.hpp"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <cmath>
@@ -58,7 +59,7 @@ SecondOrderTable ExactSecondOrderBuilder::build(const DiscreteTf& tf, double len
   check_size(n);
   SecondOrderTable t(tf.axis(), length, kMaxSecondOrderIterations);
   tbb::parallel_for(0, n, [&](int f) {
-    for (int m = 0; m < n; ++m)
+    for (int m = 0; m < n && !tbb::is_current_task_group_canceling(); ++m)  // a cancelled build stops
       for (int b = 0; b < n; ++b)
         store(t.entry(f, m, b), converged([&](int k) { return second_order_entry(tf, f, m, b, length, k); }));
   });
@@ -71,7 +72,7 @@ SecondOrderWeightedTables ExactSecondOrderBuilder::build_weighted(const Discrete
   check_size(n);
   SecondOrderWeightedTables t(tf.axis(), length, kMaxSecondOrderIterations);
   tbb::parallel_for(0, n, [&](int f) {
-    for (int m = 0; m < n; ++m)
+    for (int m = 0; m < n && !tbb::is_current_task_group_canceling(); ++m)  // a cancelled build stops
       for (int b = 0; b < n; ++b) {
         const SecondOrderWeights w = exact_second_order_entry(tf, f, m, b, length);
         store(t.full.entry(f, m, b), w.full);

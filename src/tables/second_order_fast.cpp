@@ -1,6 +1,7 @@
 #include "vri/tables/second_order_fast.hpp"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <cmath>
@@ -218,7 +219,10 @@ void walk_entries(const DiscreteTf& tf, double length, int iterations, Store&& s
     const DiagonalChords chords(n, d1, iterations);
     LaneResults out;
     const int f_lo = std::max(0, -d1), f_hi = std::min(n - 1, n - 1 - d1);
-    for (int f0 = f_lo; f0 <= f_hi; f0 += kLanes)
+    for (int f0 = f_lo; f0 <= f_hi; f0 += kLanes) {
+      // A task is up to n^2 x iterations chord steps (seconds): a cancelled
+      // build (the viewer's page gone) stops here, not at the task's end.
+      if (tbb::is_current_task_group_canceling()) return;
       for (int d2 = std::max(-(n - 1), -(f0 + kLanes - 1)); d2 <= n - 1 - f0; ++d2) {
         if constexpr (Weighted)
           chords_lanes_weighted(full, weighted, chords.index(d2), chords.corner(d2), lagrange, f0, iterations, out);
@@ -229,6 +233,7 @@ void walk_entries(const DiscreteTf& tf, double length, int iterations, Store&& s
           if (f <= f_hi && b >= 0 && b < n) store_entry(f, f + d1, b, j, out);
         }
       }
+    }
   });
 }
 

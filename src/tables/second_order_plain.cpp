@@ -1,6 +1,7 @@
 #include "vri/tables/second_order_plain.hpp"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include "vri/tables/table_builder.hpp"
 
@@ -12,7 +13,7 @@ SecondOrderTable PlainSecondOrderBuilder::build(const DiscreteTf& tf, double len
   SecondOrderTable table(tf.axis(), length, iterations);
   const int n = tf.size();
   tbb::parallel_for(0, n, [&](int f) {
-    for (int m = 0; m < n; ++m)
+    for (int m = 0; m < n && !tbb::is_current_task_group_canceling(); ++m)  // a cancelled build stops
       for (int b = 0; b < n; ++b) store(table.entry(f, m, b), second_order_entry(tf, f, m, b, length, iterations));
   });
   return table;
@@ -25,7 +26,7 @@ SecondOrderWeightedTables PlainSecondOrderBuilder::build_weighted(const Discrete
   SecondOrderWeightedTables t(tf.axis(), length, iterations);
   const int n = tf.size();
   tbb::parallel_for(0, n, [&](int f) {
-    for (int m = 0; m < n; ++m)
+    for (int m = 0; m < n && !tbb::is_current_task_group_canceling(); ++m)  // a cancelled build stops
       for (int b = 0; b < n; ++b) {
         const SecondOrderWeights w = second_order_weighted_entry(tf, f, m, b, length, iterations);
         store(t.full.entry(f, m, b), w.full);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "server_limits.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri::viewer {
@@ -15,9 +16,9 @@ namespace net = boost::asio;
 ClientSession::ClientSession(net::ip::tcp::socket&& socket, ServerState& state)
     : ws_(std::move(socket)), state_(state) {}
 
-ClientSession::~ClientSession() { stop_worker(); }
+ClientSession::~ClientSession() { retire_worker(); }
 
-void ClientSession::stop_worker() { worker_.reset(); }
+void ClientSession::retire_worker() { state_.reaper.retire(std::move(worker_)); }
 
 void ClientSession::run(beast::http::request<beast::http::empty_body> request) {
   ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
@@ -44,17 +45,23 @@ void ClientSession::on_accept(beast::error_code ec) {
         });
       }};
   worker_ = std::make_unique<RenderWorker>(state_.catalog, state_.catalog.first_id(), std::move(output),
-                                           state_.threads, state_.backend);
+                                           state_.threads, state_.backend, state_.page_memory);
   read();
 }
 
 void ClientSession::read() {
+  reading_ = true;
   ws_.async_read(buffer_, [self = shared_from_this()](beast::error_code ec, std::size_t n) { self->on_read(ec, n); });
 }
 
+void ClientSession::read_if_room() {
+  if (!reading_ && worker_ && queued_bytes_ <= kMaxQueuedBytes) read();
+}
+
 void ClientSession::on_read(beast::error_code ec, std::size_t) {
+  reading_ = false;
   if (ec) {  // closed, vanished, or a message over the limit: end the session, cancel its work
-    stop_worker();
+    retire_worker();
     return;
   }
   const std::string text = beast::buffers_to_string(buffer_.data());
@@ -68,7 +75,7 @@ void ClientSession::on_read(beast::error_code ec, std::size_t) {
       enqueue({false, -1, std::make_shared<const std::string>(error_message(seq_of(text), e.what()))});
     }
   }
-  read();
+  read_if_room();  // else the next write that leaves room reads on
 }
 
 void ClientSession::enqueue(Outgoing message) {
@@ -76,12 +83,19 @@ void ClientSession::enqueue(Outgoing message) {
     // A frame of an older request than this one will not be seen: drop it
     // unless it is already leaving (the front, while writing).
     const auto first = queue_.begin() + (writing_ ? 1 : 0);
-    queue_.erase(std::remove_if(first, queue_.end(),
-                                [&](const Outgoing& q) { return q.binary && q.seq < message.seq; }),
-                 queue_.end());
+    const auto stale = std::remove_if(first, queue_.end(),
+                                      [&](const Outgoing& q) { return q.binary && q.seq < message.seq; });
+    for (auto it = stale; it != queue_.end(); ++it) queued_bytes_ -= it->data->size();
+    queue_.erase(stale, queue_.end());
   }
+  queued_bytes_ += message.data->size();
   queue_.push_back(std::move(message));
   if (!writing_) write_next();
+}
+
+void ClientSession::pop_front() {
+  queued_bytes_ -= queue_.front().data->size();
+  queue_.pop_front();
 }
 
 void ClientSession::write_next() {
@@ -90,8 +104,9 @@ void ClientSession::write_next() {
   ws_.binary(queue_.front().binary);
   ws_.async_write(net::buffer(*queue_.front().data), [self = shared_from_this()](beast::error_code ec, std::size_t) {
     self->writing_ = false;
-    self->queue_.pop_front();
+    self->pop_front();
     if (ec) return;
+    self->read_if_room();
     self->write_next();
   });
 }

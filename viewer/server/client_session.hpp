@@ -3,7 +3,10 @@
 // limited, checked; a bad one gets an error reply and the session goes on),
 // hands them to the client's RenderWorker, and writes what the worker sends
 // back one message at a time, dropping frames a newer request has made stale
-// before they leave. A vanished client cancels its work.
+// before they leave. While more than kMaxQueuedBytes wait to leave (a client
+// that does not read), it reads no more of the client's messages, so replies
+// cannot pile up. A vanished client cancels its work; the worker is joined
+// off the I/O thread (WorkerReaper).
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
@@ -28,8 +31,8 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   void run(boost::beast::http::request<boost::beast::http::empty_body> request);
   // Closes the connection (server stop); on the I/O thread.
   void close();
-  // Stops the render worker and waits for it (after the I/O loop ended).
-  void stop_worker();
+  // Cancels the render worker's work and hands it to the server's reaper.
+  void retire_worker();
 
  private:
   struct Outgoing {
@@ -42,6 +45,8 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   void read();
   void on_read(boost::beast::error_code ec, std::size_t bytes);
   void enqueue(Outgoing message);
+  void pop_front();
+  void read_if_room();
   void write_next();
 
   boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
@@ -49,7 +54,9 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   ServerState& state_;
   std::unique_ptr<RenderWorker> worker_;
   std::deque<Outgoing> queue_;
+  std::size_t queued_bytes_ = 0;
   bool writing_ = false;
+  bool reading_ = false;  // a read is in flight
 };
 
 }  // namespace vri::viewer

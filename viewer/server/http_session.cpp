@@ -9,6 +9,8 @@
 #include "access_token.hpp"
 #include "client_session.hpp"
 #include "embedded_files.hpp"
+#include "host_check.hpp"
+#include "server_limits.hpp"
 #include "vri/version.hpp"
 
 namespace vri::viewer {
@@ -37,7 +39,11 @@ bool same_origin(const http::request<http::empty_body>& req) {
 }  // namespace
 
 HttpSession::HttpSession(net::ip::tcp::socket&& socket, ServerState& state)
-    : stream_(std::move(socket)), state_(state) {}
+    : stream_(std::move(socket)), state_(state) {
+  ++state_.connections;
+}
+
+HttpSession::~HttpSession() { --state_.connections; }
 
 void HttpSession::run() {
   net::dispatch(stream_.get_executor(), [self = shared_from_this()] { self->read(); });
@@ -62,25 +68,36 @@ void HttpSession::on_read(beast::error_code ec) {
   const unsigned version = req.version();
   const std::string target(req.target());
   const std::string_view path = path_of(target);
-  if (req.method() != http::verb::get) {
-    Response r = text_response(http::status::method_not_allowed, version, "only GET");
-    r.set(http::field::allow, "GET");
+  const bool head = req.method() == http::verb::head;
+  if (req.method() != http::verb::get && !head) {
+    Response r = text_response(http::status::method_not_allowed, version, "only GET and HEAD");
+    r.set(http::field::allow, "GET, HEAD");
     return respond(std::move(r));
   }
+  if (!allowed_host(std::string(req[http::field::host]), state_.host))
+    return respond(text_response(http::status::bad_request, version,
+                                 "vri view: the Host header must be this machine's address or name"),
+                   head);
   const std::string given = token_of(target, std::string(req[http::field::cookie]));
   if (!same_token(given, state_.token))
     return respond(text_response(http::status::forbidden, version,
-                                 "vri view: this needs the access token (open the address vri view printed)"));
+                                 "vri view: this needs the access token (open the address vri view printed)"),
+                   head);
   if (path == "/ws") {
     if (!beast::websocket::is_upgrade(req))
       return respond(text_response(http::status::bad_request, version, "/ws is a WebSocket"));
     if (!same_origin(req))
       return respond(text_response(http::status::forbidden, version, "vri view: WebSocket from another origin"));
-    stream_.expires_never();
-    auto session = std::make_shared<ClientSession>(stream_.release_socket(), state_);
+    std::shared_ptr<ClientSession> session;
     {
       std::lock_guard lock(state_.sessions_mutex);
       std::erase_if(state_.sessions, [](const auto& w) { return w.expired(); });
+      if (state_.sessions.size() >= std::size_t(kMaxSessions))
+        return respond(text_response(http::status::service_unavailable, version,
+                                     "vri view: " + std::to_string(kMaxSessions) +
+                                         " pages are open already, the most at once: close one"));
+      stream_.expires_never();
+      session = std::make_shared<ClientSession>(stream_.release_socket(), state_);
       state_.sessions.push_back(session);
     }
     session->run(std::move(req));
@@ -102,13 +119,14 @@ void HttpSession::on_read(beast::error_code ec) {
             std::string(kTokenCookie) + "=" + state_.token + "; HttpOnly; SameSite=Strict; Path=/");
     r.body() = std::string(f.content);
     r.keep_alive(req.keep_alive());
-    return respond(std::move(r));
+    return respond(std::move(r), head);
   }
-  respond(text_response(http::status::not_found, version, "not found"));
+  respond(text_response(http::status::not_found, version, "not found"), head);
 }
 
-void HttpSession::respond(Response response) {
+void HttpSession::respond(Response response, bool head) {
   response.prepare_payload();
+  if (head) response.body().clear();  // the GET's headers, Content-Length included, and no body
   auto shared = std::make_shared<Response>(std::move(response));
   http::async_write(stream_, *shared, [self = shared_from_this(), shared](beast::error_code ec, std::size_t) {
     if (ec) return;

@@ -31,32 +31,43 @@ json methods_for(const Dataset& d) {
 }  // namespace
 
 RenderWorker::RenderWorker(DatasetCatalog& catalog, std::string first, WorkerOutput output, int threads,
-                           Backend backend)
-    : catalog_(catalog), output_(std::move(output)), threads_(threads), backend_(backend) {
+                           Backend backend, std::uint64_t page_memory)
+    : catalog_(catalog), output_(std::move(output)), threads_(threads), backend_(backend),
+      account_("the viewer's memory for one page", page_memory) {
   pending_ = OpenRequest{std::move(first)};
   thread_ = std::thread([this] { run(); });
 }
 
 RenderWorker::~RenderWorker() {
+  request_stop();
+  thread_.join();
+}
+
+void RenderWorker::cancel_locked() {
+  cancel_ = true;
+  if (building_) building_->cancel_group_execution();
+}
+
+void RenderWorker::request_stop() {
   {
     std::lock_guard lock(mutex_);
     stop_ = true;
-    cancel_ = true;
+    cancel_locked();
   }
   wake_.notify_all();
-  thread_.join();
 }
 
 void RenderWorker::submit(ClientMessage message) {
   {
     std::lock_guard lock(mutex_);
     pending_ = std::move(message);
-    cancel_ = true;  // whatever runs is stale now
+    cancel_locked();  // whatever runs is stale now
   }
   wake_.notify_all();
 }
 
 void RenderWorker::run() {
+  const AccountScope account(account_);
   for (;;) {
     ClientMessage message;
     {
@@ -72,12 +83,10 @@ void RenderWorker::run() {
       handle(message);
     } catch (const RenderCancelled&) {
       // A newer request is waiting: nothing to say.
-    } catch (const Error& e) {
-      output_.text(error_message(seq, e.what()));
-    } catch (const std::bad_alloc&) {
-      output_.text(error_message(seq, "out of memory"));
     } catch (const std::exception& e) {
-      output_.text(error_message(seq, e.what()));
+      // What failed after a cancel (a cancelled build's leftovers) is stale too.
+      if (cancel_) continue;
+      output_.text(error_message(seq, dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory" : e.what()));
     }
   }
 }
@@ -113,7 +122,32 @@ RenderWorker::Prepared& RenderWorker::prepare(Prepared& slot, const json& scene,
   const auto start = std::chrono::steady_clock::now();
   slot = {};
   slot.scene = std::make_unique<Scene>(parse_scene(scene.dump(), dataset_->volume, dataset_->base_dir, "render.scene"));
-  slot.renderer = std::make_unique<SceneRenderer>(*slot.scene, backend);
+  // The build runs in a TBB group that submit() and request_stop() cancel: its
+  // parallel loops stop taking work, and what they leave is thrown away.
+  tbb::task_group_context context;
+  {
+    std::lock_guard lock(mutex_);
+    if (cancel_) throw RenderCancelled();
+    building_ = &context;
+  }
+  tbb::task_group group(context);
+  std::unique_ptr<SceneRenderer> renderer;
+  const tbb::task_group_status status = group.run_and_wait([&] {
+    struct Done {  // before the group resets the context: no cancel reaches it after
+      RenderWorker& w;
+      ~Done() {
+        std::lock_guard lock(w.mutex_);
+        w.building_ = nullptr;
+      }
+    } done{*this};
+    const AccountScope account(account_);  // the task may run on another thread
+    renderer = std::make_unique<SceneRenderer>(*slot.scene, backend);
+  });
+  if (status == tbb::task_group_status::canceled || cancel_) {
+    slot = {};
+    throw RenderCancelled();
+  }
+  slot.renderer = std::move(renderer);
   slot.key = std::move(key);
   slot.setup_ms = ms_since(start);
   return slot;

@@ -6,7 +6,9 @@
 // (reduced resolution, JPEG) or the final frame (full resolution, PNG); then,
 // after a final frame and when asked, the error map against `exact` and the
 // exact image. Tables, macro cells and images are reused while the transfer
-// function and method stay the same (orbiting rebuilds nothing).
+// function and method stay the same (orbiting rebuilds nothing). A table build
+// is cancelled too (its TBB group), and what one page's renders hold is
+// charged to an account of its own (kPageMemory, server_limits.hpp).
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
@@ -18,9 +20,13 @@
 #include <thread>
 #include <vector>
 
+#include <tbb/task_group.h>
+
+#include "vri/core/memory_limit.hpp"
 #include "vri/render/backend.hpp"
 
 #include "dataset.hpp"
+#include "server_limits.hpp"
 #include "protocol.hpp"
 #include "vri/render/image.hpp"
 #include "vri/render/scene_renderer.hpp"
@@ -36,13 +42,17 @@ struct WorkerOutput {
 class RenderWorker {
  public:
   // Sends the welcome of `first` once started. `threads`: render threads (0: every core).
+  // `page_memory`: what its tables and images may hold at once.
   RenderWorker(DatasetCatalog& catalog, std::string first, WorkerOutput output, int threads = 0,
-               Backend backend = Backend::Cpu);
+               Backend backend = Backend::Cpu, std::uint64_t page_memory = kPageMemory);
   ~RenderWorker();  // cancels the work in flight and joins
   RenderWorker(const RenderWorker&) = delete;
   RenderWorker& operator=(const RenderWorker&) = delete;
 
   void submit(ClientMessage message);
+  // Cancels the work in flight and ends the thread soon; returns at once
+  // (the destructor joins). Nothing is sent after it.
+  void request_stop();
 
   // The longest a preview may take (ms) before the worker halves its resolution again.
   static constexpr double kPreviewBudgetMs = 40;
@@ -65,6 +75,7 @@ class RenderWorker {
   };
 
   void run();
+  void cancel_locked();  // mutex_ held
   void handle(const ClientMessage& message);
   void open(const std::string& id);
   void render(const RenderRequest& request);
@@ -81,8 +92,10 @@ class RenderWorker {
   std::optional<ClientMessage> pending_;
   bool stop_ = false;
   std::atomic<bool> cancel_{false};
+  tbb::task_group_context* building_ = nullptr;  // the table build in flight, if any
 
-  // The worker thread's own state.
+  // The worker thread's own state; the account first, as it must outlive what is charged to it.
+  MemoryAccount account_;
   std::shared_ptr<const Dataset> dataset_;
   Prepared method_, exact_;
   std::optional<Rendered> final_, reference_;

@@ -4,12 +4,15 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/post.hpp>
 #include <boost/asio/signal_set.hpp>
+#include <boost/asio/steady_timer.hpp>
 
 #include <csignal>
+#include <cstdio>
 
 #include "access_token.hpp"
 #include "client_session.hpp"
 #include "http_session.hpp"
+#include "server_limits.hpp"
 #include "server_state.hpp"
 #include "vri/core/error.hpp"
 
@@ -23,19 +26,39 @@ struct ViewerServer::Impl {
   net::io_context io{1};
   tcp::acceptor acceptor{io};
   net::signal_set signals{io};
+  net::steady_timer accept_retry{io};
   bool stopping = false;
+  bool accept_failing = false;  // said once per run of failures
 
   Impl(const ServerOptions& o)
-      : state{make_token(), o.host, 0, DatasetCatalog(o.file, o.bundled_dir), o.threads, o.backend, {}, {}} {}
+      : state{make_token(), o.host, 0, DatasetCatalog(o.file, o.bundled_dir), o.threads, o.backend, o.page_memory, {}, {}, 0, {}} {}
 
   void accept() {
     acceptor.async_accept([this](boost::system::error_code ec, tcp::socket socket) {
-      if (ec) return;  // closed by stop()
-      // Frames leave at once: Nagle's algorithm with the browser's delayed
-      // ACK held the tail of each frame back 40 ms.
-      boost::system::error_code ignored;
-      socket.set_option(tcp::no_delay(true), ignored);
-      std::make_shared<HttpSession>(std::move(socket), state)->run();
+      if (stopping) return;
+      if (ec) {
+        // Out of file descriptors (or another passing failure): say so once
+        // and try again shortly; giving up here left the server deaf for good.
+        if (!accept_failing)
+          std::fprintf(stderr, "vri view: cannot accept a connection (%s); trying again every %lld ms\n",
+                       ec.message().c_str(), static_cast<long long>(kAcceptRetry.count()));
+        accept_failing = true;
+        accept_retry.expires_after(kAcceptRetry);
+        accept_retry.async_wait([this](boost::system::error_code e) {
+          if (!e && !stopping) accept();
+        });
+        return;
+      }
+      if (accept_failing) std::fprintf(stderr, "vri view: accepting connections again\n");
+      accept_failing = false;
+      // Over the cap the socket is closed as it goes out of scope: the others keep being served.
+      if (state.connections < kMaxConnections) {
+        // Frames leave at once: Nagle's algorithm with the browser's delayed
+        // ACK held the tail of each frame back 40 ms.
+        boost::system::error_code ignored;
+        socket.set_option(tcp::no_delay(true), ignored);
+        std::make_shared<HttpSession>(std::move(socket), state)->run();
+      }
       accept();
     });
   }
@@ -46,6 +69,7 @@ struct ViewerServer::Impl {
     stopping = true;
     boost::system::error_code ignored;
     acceptor.close(ignored);
+    accept_retry.cancel();
     signals.cancel(ignored);
     std::lock_guard lock(state.sessions_mutex);
     for (const auto& weak : state.sessions)
@@ -94,11 +118,14 @@ std::string ViewerServer::url() const {
 
 void ViewerServer::run() {
   impl_->io.run();
-  // The loop has ended: no handler runs now. Stop every worker before the
-  // sessions, and the I/O objects they post to, are destroyed.
-  std::lock_guard lock(impl_->state.sessions_mutex);
-  for (const auto& weak : impl_->state.sessions)
-    if (auto s = weak.lock()) s->stop_worker();
+  // The loop has ended: no handler runs now. Stop every worker, and join
+  // them, before the sessions and the I/O objects they post to are destroyed.
+  {
+    std::lock_guard lock(impl_->state.sessions_mutex);
+    for (const auto& weak : impl_->state.sessions)
+      if (auto s = weak.lock()) s->retire_worker();
+  }
+  impl_->state.reaper.drain();
 }
 
 void ViewerServer::stop() {

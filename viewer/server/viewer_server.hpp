@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "server_limits.hpp"
 #include "vri/render/backend.hpp"
 
 namespace vri::viewer {
@@ -18,6 +19,7 @@ struct ServerOptions {
   int threads = 0;                      // render threads per client (0: every core)
   Backend backend = Backend::Cpu;       // where frames are rendered (--backend)
   bool handle_signals = true;           // SIGINT and SIGTERM stop the server
+  std::uint64_t page_memory = kPageMemory;  // what one page's renders may hold (server_limits.hpp)
 };
 
 class ViewerServer {

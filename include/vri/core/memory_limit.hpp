@@ -1,11 +1,18 @@
 #pragma once
 // A process-wide memory budget consulted before big allocations (volume
-// samples, mesh arrays, gradient fields, tables), so a size declared by a file
-// or asked for on the command line fails with a clear message instead of
-// exhausting the machine. Default: 75% of physical memory; `--max-memory`.
+// samples, mesh arrays, gradient fields, tables, images), so a size declared
+// by a file or asked for on the command line fails with a clear message
+// instead of exhausting the machine. Default: 75% of physical memory;
+// `--max-memory`. It is one account for the whole process: what is held by a
+// MemoryCharge (every table and image, the volumes and meshes) counts against
+// every later check, so two structures that each fit cannot together pass it.
+// An AccountScope adds a second, smaller account on one thread (the viewer's
+// per-client budget, docs/RELIABILITY.md).
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace vri {
 
@@ -16,11 +23,77 @@ void set_memory_limit(std::uint64_t bytes);
 // 75% of physical memory (sysconf), or 4 GiB where it cannot be read.
 std::uint64_t default_memory_limit();
 
-// Throws vri::Error naming `what` and the bytes it would take when `bytes`
-// exceeds the budget, and saying how to raise it.
+// Throws vri::Error naming `what` and the bytes it would take when `bytes`,
+// added to what is held now, exceeds the budget (or the thread's account's,
+// see AccountScope), and saying how to raise it.
 void check_allocation(std::uint64_t bytes, const std::string& what);
 // check_allocation for count * size bytes, with overflow detection.
 void check_allocation(std::uint64_t count, std::uint64_t size, const std::string& what);
+
+// Bytes held now by MemoryCharges in the whole process.
+std::uint64_t memory_in_use();
+
+// A second budget, for the charges made on the threads that enter it with an
+// AccountScope (one viewer client's). Must outlive every charge made to it.
+class MemoryAccount {
+ public:
+  MemoryAccount(std::string name, std::uint64_t limit) : name_(std::move(name)), limit_(limit) {}
+  MemoryAccount(const MemoryAccount&) = delete;
+  MemoryAccount& operator=(const MemoryAccount&) = delete;
+  const std::string& name() const { return name_; }
+  std::uint64_t limit() const { return limit_; }
+  std::uint64_t in_use() const { return used_.load(std::memory_order_relaxed); }
+
+ private:
+  friend class MemoryCharge;
+  std::string name_;
+  std::uint64_t limit_;
+  std::atomic<std::uint64_t> used_{0};
+};
+
+// While it lives, MemoryCharges made on this thread also count against
+// `account` (nested scopes: the innermost).
+class AccountScope {
+ public:
+  explicit AccountScope(MemoryAccount& account);
+  ~AccountScope();
+  AccountScope(const AccountScope&) = delete;
+  AccountScope& operator=(const AccountScope&) = delete;
+
+ private:
+  MemoryAccount* previous_;
+};
+
+// Bytes held against the process's budget (and the thread's account) from
+// construction to destruction: the structure that owns it is counted for as
+// long as it lives. Throws vri::Error, as check_allocation, when they do not fit.
+class MemoryCharge {
+ public:
+  MemoryCharge() = default;
+  MemoryCharge(std::uint64_t bytes, const std::string& what);
+  MemoryCharge(std::uint64_t count, std::uint64_t size, const std::string& what);
+  // A copy of a structure charges its bytes again.
+  MemoryCharge(const MemoryCharge& other) : MemoryCharge(other.bytes_, "a copy") {}
+  MemoryCharge& operator=(const MemoryCharge& other) {
+    MemoryCharge(other).swap(*this);
+    return *this;
+  }
+  MemoryCharge(MemoryCharge&& other) noexcept { swap(other); }
+  MemoryCharge& operator=(MemoryCharge&& other) noexcept {
+    MemoryCharge(std::move(other)).swap(*this);
+    return *this;
+  }
+  ~MemoryCharge();
+  void swap(MemoryCharge& other) noexcept {
+    std::swap(bytes_, other.bytes_);
+    std::swap(account_, other.account_);
+  }
+  std::uint64_t bytes() const { return bytes_; }
+
+ private:
+  std::uint64_t bytes_ = 0;
+  MemoryAccount* account_ = nullptr;
+};
 
 // Parses "1073741824", "512M", "4G", "1.5G", "64K", "2T" (powers of 1024);
 // nullopt on anything else or zero.

@@ -13,6 +13,8 @@
 #include <cstddef>
 #include <string_view>
 
+#include "vri/core/memory_limit.hpp"
+
 namespace vri {
 
 class ZeroedFloats {
@@ -34,6 +36,7 @@ class ZeroedFloats {
  private:
   float* data_ = nullptr;
   std::size_t size_ = 0;
+  MemoryCharge charge_;  // the process's account holds these bytes while they live
 };
 
 }  // namespace vri

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "vri/core/memory_limit.hpp"
 #include "vri/core/vec3.hpp"
 
 namespace vri {
@@ -54,6 +55,7 @@ class TetMesh {
   std::vector<Tet> tets_;
   std::vector<float> scalars_;
   std::vector<std::int32_t> neighbors_;
+  MemoryCharge charge_;  // the arrays above, held against the process's budget
   std::size_t dropped_ = 0;
   Vec3 lo_, hi_;
   float min_ = 0, max_ = 0;
