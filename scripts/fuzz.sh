@@ -14,14 +14,15 @@ dir=${2:-build-fuzz}
 CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRI_FUZZ=ON -DVRI_BUILD_TESTS=OFF \
   -DVRI_BUILD_BENCH=OFF >/dev/null
 cmake --build "$dir" -j "$(nproc)" --target fuzz_raw fuzz_nrrd fuzz_nrrd_gzip fuzz_volvis_dat fuzz_vtk_legacy \
-  fuzz_vtu fuzz_vti fuzz_vtk_structured_points fuzz_metaimage fuzz_npy_volume fuzz_tiff fuzz_scene fuzz_transfer_function
+  fuzz_vtu fuzz_vti fuzz_vtk_structured_points fuzz_metaimage fuzz_npy_volume fuzz_tiff fuzz_scene fuzz_transfer_function \
+  fuzz_viewer_protocol
 mkdir -p "$dir/fuzz-artifacts"
 # Seeds: small generated files (fuzz/seeds/) and the bundled small inputs.
 declare -A extra=(
   [raw]="" [nrrd]="" [nrrd_gzip]="" [volvis_dat]="" [metaimage]="" [npy_volume]="" [tiff]=""
   [vtk_legacy]="tests/data/mesh" [vtu]="tests/data/mesh"
   [vti]="tests/data/volume" [vtk_structured_points]="tests/data/volume"
-  [scene]="scenes" [transfer_function]="presets"
+  [scene]="scenes" [transfer_function]="presets" [viewer_protocol]=""
 )
 # One harness: its corpus grows in BUILD_DIR/fuzz-corpus/HARNESS; its log
 # ends with libFuzzer's stats and the CPU seconds it used.
@@ -39,7 +40,7 @@ fuzz_one() {
   return $rc
 }
 harnesses=(raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu vti vtk_structured_points metaimage npy_volume tiff scene
-           transfer_function)
+           transfer_function viewer_protocol)
 jobs=${FUZZ_JOBS:-$(nproc)}
 [ "${FUZZ_PARALLEL:-0}" = 1 ] && jobs=${#harnesses[@]}  # every harness at once (the long campaign)
 status=0 running=0

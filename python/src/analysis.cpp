@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "interruptible.hpp"
 #include "vri/analysis/pixel_signal.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/memory_limit.hpp"
@@ -22,11 +23,7 @@ py::array_t<float> table(const py::object& tf_object, int size, int order, doubl
   const TransferFunction tf = transfer_function_of(tf_object);
   const TableRequest request{size,  order, length, lengths, max_length, std::move(builder), iterations, steps,
                              std::move(accumulation), std::move(backend)};
-  BuiltTable built;
-  {
-    py::gil_scoped_release release;
-    built = build_table(tf, request);
-  }
+  const BuiltTable built = interruptible([&](const Cancellation&) { return build_table(tf, request); });
   // The array views the table; the capsule keeps it alive.
   auto* owner = new std::shared_ptr<const void>(built.owner);
   const py::capsule capsule(owner, [](void* p) { delete static_cast<std::shared_ptr<const void>*>(p); });

@@ -1,12 +1,13 @@
 // vri.render, vri.error_estimate, vri.trace: a scene rendered as the CLI's
 // `vri render` renders it (the same SceneOverrides and SceneRenderer), with
-// the GIL released while the C++ threads work.
+// the GIL released while the C++ threads work, and Ctrl-C heard (interruptible.hpp).
 #include <optional>
 #include <string>
 
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "interruptible.hpp"
 #include "vri/core/error.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
 #include "vri/render/render_checks.hpp"
@@ -94,14 +95,13 @@ void warn(const std::string& message) {
 py::array_t<float> render(const py::object& scene_object, const py::kwargs& kwargs) {
   const RenderRequest request = request_of("render", kwargs);
   const Scene scene = scene_for(scene_object, request);
-  Image image;
   std::optional<std::string> transparent;
-  {
-    py::gil_scoped_release release;
+  Image image = interruptible([&](const Cancellation& cancel) {
     const SceneRenderer renderer(scene, request.backend);
-    image = renderer.render({.threads = request.threads});
-    transparent = transparency_cause(image, scene, renderer.camera());
-  }
+    Image rendered = renderer.render({.threads = request.threads, .cancel = cancel.flag()});
+    transparent = transparency_cause(rendered, scene, renderer.camera());
+    return rendered;
+  });
   if (transparent) warn("vri: every pixel is transparent: " + *transparent);
   return to_numpy(std::move(image));
 }
@@ -109,11 +109,9 @@ py::array_t<float> render(const py::object& scene_object, const py::kwargs& kwar
 py::array_t<float> error_estimate(const py::object& scene_object, const py::kwargs& kwargs) {
   const RenderRequest request = request_of("error_estimate", kwargs);
   const Scene scene = scene_for(scene_object, request);
-  Image estimate;
-  {
-    py::gil_scoped_release release;
-    estimate = SceneRenderer(scene, request.backend).render_error_estimate({.threads = request.threads});
-  }
+  Image estimate = interruptible([&](const Cancellation& cancel) {
+    return SceneRenderer(scene, request.backend).render_error_estimate({.threads = request.threads, .cancel = cancel.flag()});
+  });
   return to_numpy(std::move(estimate));
 }
 

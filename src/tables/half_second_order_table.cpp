@@ -10,6 +10,7 @@ HalfSecondOrderTable::HalfSecondOrderTable(const SecondOrderTable& table)
     : axis_(table.axis()),
       length_(table.length()),
       iterations_(table.iterations()),
+      charge_(table.bytes() / sizeof(float), sizeof(Half), "the half-precision copy of a second-order table"),
       data_(table.bytes() / sizeof(float)) {
   const float* src = table.data();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, data_.size()), [&](const tbb::blocked_range<std::size_t>& r) {

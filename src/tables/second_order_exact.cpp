@@ -3,6 +3,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
+#include "vri/core/cancelled.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -63,6 +65,7 @@ SecondOrderTable ExactSecondOrderBuilder::build(const DiscreteTf& tf, double len
       for (int b = 0; b < n; ++b)
         store(t.entry(f, m, b), converged([&](int k) { return second_order_entry(tf, f, m, b, length, k); }));
   });
+  throw_if_build_cancelled();
   return t;
 }
 
@@ -80,6 +83,7 @@ SecondOrderWeightedTables ExactSecondOrderBuilder::build_weighted(const Discrete
         store(t.back.entry(f, m, b), w.back);
       }
   });
+  throw_if_build_cancelled();
   return t;
 }
 

@@ -3,6 +3,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
+#include "vri/core/cancelled.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -220,10 +222,10 @@ void walk_entries(const DiscreteTf& tf, double length, int iterations, Store&& s
     LaneResults out;
     const int f_lo = std::max(0, -d1), f_hi = std::min(n - 1, n - 1 - d1);
     for (int f0 = f_lo; f0 <= f_hi; f0 += kLanes) {
-      // A task is up to n^2 x iterations chord steps (seconds): a cancelled
-      // build (the viewer's page gone) stops here, not at the task's end.
-      if (tbb::is_current_task_group_canceling()) return;
       for (int d2 = std::max(-(n - 1), -(f0 + kLanes - 1)); d2 <= n - 1 - f0; ++d2) {
+        // A task is up to n^2 x iterations chord steps (seconds): a cancelled
+        // build (a viewer page gone, Ctrl-C in Python) stops here, not at its end.
+        if (tbb::is_current_task_group_canceling()) return;
         if constexpr (Weighted)
           chords_lanes_weighted(full, weighted, chords.index(d2), chords.corner(d2), lagrange, f0, iterations, out);
         else
@@ -246,6 +248,7 @@ SecondOrderTable FastSecondOrderBuilder::build(const DiscreteTf& tf, double leng
   walk_entries<false>(tf, length, iterations, [&](int f, int m, int b, int j, const LaneResults& out) {
     store(table.entry(f, m, b), out, j);
   });
+  throw_if_build_cancelled();
   write_straight_entries(tf, table);
   return table;
 }
@@ -260,6 +263,7 @@ SecondOrderWeightedTables FastSecondOrderBuilder::build_weighted(const DiscreteT
     store_weighted(t.middle.entry(f, m, b), out, 0, j);
     store_weighted(t.back.entry(f, m, b), out, 1, j);
   });
+  throw_if_build_cancelled();
   // The straight entries as build() writes them, and their weighted parts
   // from the same definition.
   write_straight_entries(tf, t.full);
@@ -271,6 +275,7 @@ SecondOrderWeightedTables FastSecondOrderBuilder::build_weighted(const DiscreteT
       store(t.back.entry(f, (f + b) / 2, b), w.back);
     }
   });
+  throw_if_build_cancelled();
   return t;
 }
 

@@ -3,6 +3,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
+#include "vri/core/cancelled.hpp"
+
 #include "vri/tables/table_builder.hpp"
 
 namespace vri {
@@ -16,6 +18,7 @@ SecondOrderTable PlainSecondOrderBuilder::build(const DiscreteTf& tf, double len
     for (int m = 0; m < n && !tbb::is_current_task_group_canceling(); ++m)  // a cancelled build stops
       for (int b = 0; b < n; ++b) store(table.entry(f, m, b), second_order_entry(tf, f, m, b, length, iterations));
   });
+  throw_if_build_cancelled();
   return table;
 }
 
@@ -34,6 +37,7 @@ SecondOrderWeightedTables PlainSecondOrderBuilder::build_weighted(const Discrete
         store(t.back.entry(f, m, b), w.back);
       }
   });
+  throw_if_build_cancelled();
   return t;
 }
 

@@ -43,16 +43,11 @@ RenderWorker::~RenderWorker() {
   thread_.join();
 }
 
-void RenderWorker::cancel_locked() {
-  cancel_ = true;
-  if (building_) building_->cancel_group_execution();
-}
-
 void RenderWorker::request_stop() {
   {
     std::lock_guard lock(mutex_);
     stop_ = true;
-    cancel_locked();
+    cancel_.cancel();
   }
   wake_.notify_all();
 }
@@ -61,7 +56,7 @@ void RenderWorker::submit(ClientMessage message) {
   {
     std::lock_guard lock(mutex_);
     pending_ = std::move(message);
-    cancel_locked();  // whatever runs is stale now
+    cancel_.cancel();  // whatever runs is stale now
   }
   wake_.notify_all();
 }
@@ -76,7 +71,7 @@ void RenderWorker::run() {
       if (stop_) return;
       message = std::move(*pending_);
       pending_.reset();
-      cancel_ = false;  // under the lock: a submit after this cancels this message's work
+      cancel_.reset();  // under the lock: a submit after this cancels this message's work
     }
     const std::int64_t seq = std::holds_alternative<RenderRequest>(message) ? std::get<RenderRequest>(message).seq : -1;
     try {
@@ -85,7 +80,7 @@ void RenderWorker::run() {
       // A newer request is waiting: nothing to say.
     } catch (const std::exception& e) {
       // What failed after a cancel (a cancelled build's leftovers) is stale too.
-      if (cancel_) continue;
+      if (cancel_.cancelled()) continue;
       output_.text(error_message(seq, dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory" : e.what()));
     }
   }
@@ -122,31 +117,13 @@ RenderWorker::Prepared& RenderWorker::prepare(Prepared& slot, const json& scene,
   const auto start = std::chrono::steady_clock::now();
   slot = {};
   slot.scene = std::make_unique<Scene>(parse_scene(scene.dump(), dataset_->volume, dataset_->base_dir, "render.scene"));
-  // The build runs in a TBB group that submit() and request_stop() cancel: its
-  // parallel loops stop taking work, and what they leave is thrown away.
-  tbb::task_group_context context;
-  {
-    std::lock_guard lock(mutex_);
-    if (cancel_) throw RenderCancelled();
-    building_ = &context;
-  }
-  tbb::task_group group(context);
+  // The build runs in a group that submit() and request_stop() cancel; a
+  // cancelled one leaves the slot empty.
   std::unique_ptr<SceneRenderer> renderer;
-  const tbb::task_group_status status = group.run_and_wait([&] {
-    struct Done {  // before the group resets the context: no cancel reaches it after
-      RenderWorker& w;
-      ~Done() {
-        std::lock_guard lock(w.mutex_);
-        w.building_ = nullptr;
-      }
-    } done{*this};
+  cancel_.run([&] {
     const AccountScope account(account_);  // the task may run on another thread
     renderer = std::make_unique<SceneRenderer>(*slot.scene, backend);
   });
-  if (status == tbb::task_group_status::canceled || cancel_) {
-    slot = {};
-    throw RenderCancelled();
-  }
   slot.renderer = std::move(renderer);
   slot.key = std::move(key);
   slot.setup_ms = ms_since(start);
@@ -163,7 +140,7 @@ void RenderWorker::render(const RenderRequest& request) {
   Prepared& m = prepare(method_, request.scene, backend_);
   // The request's own camera: the prepared scene may be one orbited from.
   const CameraSpec spec = parse_camera(request.scene.at("camera").dump(), "render.scene");
-  const RenderOptions options{.threads = threads_, .cancel = &cancel_};
+  const RenderOptions options{.threads = threads_, .cancel = cancel_.flag()};
   const Vec3 background = m.scene->background;
   json header = {{"setup_ms", m.setup_ms}, {"method", m.renderer->method_name()}};
 

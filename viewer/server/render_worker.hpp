@@ -20,14 +20,13 @@
 #include <thread>
 #include <vector>
 
-#include <tbb/task_group.h>
-
 #include "vri/core/memory_limit.hpp"
 #include "vri/render/backend.hpp"
 
 #include "dataset.hpp"
 #include "server_limits.hpp"
 #include "protocol.hpp"
+#include "vri/render/cancellation.hpp"
 #include "vri/render/image.hpp"
 #include "vri/render/scene_renderer.hpp"
 
@@ -75,7 +74,6 @@ class RenderWorker {
   };
 
   void run();
-  void cancel_locked();  // mutex_ held
   void handle(const ClientMessage& message);
   void open(const std::string& id);
   void render(const RenderRequest& request);
@@ -91,8 +89,7 @@ class RenderWorker {
   std::condition_variable wake_;
   std::optional<ClientMessage> pending_;
   bool stop_ = false;
-  std::atomic<bool> cancel_{false};
-  tbb::task_group_context* building_ = nullptr;  // the table build in flight, if any
+  Cancellation cancel_;  // the request in flight's: its table build and its render
 
   // The worker thread's own state; the account first, as it must outlive what is charged to it.
   MemoryAccount account_;

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "vri/camera/camera.hpp"
+#include "vri/core/cancelled.hpp"
 #include "vri/core/error.hpp"
 #include "vri/integrators/integrator.hpp"
 #include "vri/render/image.hpp"
@@ -23,11 +24,7 @@ struct RenderOptions {
   std::function<void(double)> progress = {};
 };
 
-// Thrown by a render whose RenderOptions::cancel was set: no image.
-class RenderCancelled : public Error {
- public:
-  RenderCancelled() : Error("the render was cancelled") {}
-};
+// A render whose RenderOptions::cancel was set throws RenderCancelled (vri/core/cancelled.hpp): no image.
 
 // Throws RenderCancelled if options.cancel is set (for renderers of their own, between tiles).
 void throw_if_cancelled(const RenderOptions& options);

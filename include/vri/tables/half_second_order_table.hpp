@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "vri/core/memory_limit.hpp"
 #include "vri/core/rgba.hpp"
 #include "vri/tables/second_order_table.hpp"
 
@@ -40,6 +41,7 @@ class HalfSecondOrderTable {
   ScalarAxis axis_;
   double length_;
   int iterations_;
+  MemoryCharge charge_;  // data_'s bytes, held before it is allocated
   std::vector<Half> data_;
 };
 
