@@ -1,5 +1,6 @@
 #include "mpi_world.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -9,16 +10,22 @@ namespace vri::distributed {
 
 MpiWorld::MpiWorld() {
   int provided = 0;
-  if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
+  if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_MULTIPLE, &provided) != MPI_SUCCESS)
     throw Error("MPI_Init_thread failed");
   // A failure in a collective returns here instead of aborting the job, so
   // that each rank can say why (agree) and exit non-zero by itself.
   MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  if (provided >= MPI_THREAD_MULTIPLE) watchdog_ = std::make_unique<RankWatchdog>(MPI_COMM_WORLD, rank_, size_);
+  else if (rank_ == 0)
+    std::fprintf(stderr, "vri: note: this MPI library gives no MPI_THREAD_MULTIPLE: no watchdog for stopped ranks\n");
 }
 
-MpiWorld::~MpiWorld() { MPI_Finalize(); }
+MpiWorld::~MpiWorld() {
+  watchdog_.reset();
+  MPI_Finalize();
+}
 
 bool MpiWorld::launched_with_several_ranks() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})

@@ -1,9 +1,11 @@
 #pragma once
 // The processes of one `mpirun`: MPI initialised on construction with
-// MPI_THREAD_FUNNELED (only the main thread calls MPI; TBB renders in
-// between) and finalised on destruction.
+// MPI_THREAD_MULTIPLE (the main thread's collectives, and the watchdog's
+// heartbeats on a thread of their own: rank_watchdog.hpp; TBB renders in
+// between without MPI) and finalised on destruction.
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -11,6 +13,7 @@
 
 #include <mpi.h>
 
+#include "rank_watchdog.hpp"
 #include "vri/core/error.hpp"
 
 namespace vri::distributed {
@@ -62,6 +65,7 @@ class MpiWorld {
 
  private:
   int rank_ = 0, size_ = 1;
+  std::unique_ptr<RankWatchdog> watchdog_;
 };
 
 }  // namespace vri::distributed

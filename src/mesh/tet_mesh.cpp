@@ -28,8 +28,7 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<Tet> tets, std::vector<fl
                 " scalars");
   if (tets.empty()) throw Error("mesh has no tetrahedra");
   // Before anything is built: the kept copy of the tetrahedra and their neighbours.
-  charge_ = MemoryCharge(np * (sizeof(Vec3) + sizeof(float)) + tets.size() * (sizeof(Tet) + 4 * sizeof(std::int32_t)),
-                         "a mesh of " + std::to_string(tets.size()) + " tetrahedra");
+  charge_ = MemoryCharge(bytes_for(np, tets.size()), "a mesh of " + std::to_string(tets.size()) + " tetrahedra");
   for (std::size_t i = 0; i < np; ++i) {
     const Vec3 p = points_[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))

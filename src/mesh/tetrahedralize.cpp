@@ -27,8 +27,12 @@ TetMesh tetrahedralize(const GridVolume& grid, int tets_per_cell) {
   const std::size_t cells = std::size_t(n[0] - 1) * (n[1] - 1) * (n[2] - 1);
   if (grid.size() > std::size_t{INT32_MAX} / 2 || cells * tets_per_cell > std::size_t{INT32_MAX})
     throw Error("tetrahedralize: the grid is too large for a mesh");
-  check_allocation(grid.size() * sizeof(Vec3) + cells * tets_per_cell * sizeof(TetMesh::Tet),
-                   "a tetrahedralized mesh of " + std::to_string(cells * tets_per_cell) + " tetrahedra");
+  // What is built here, held until the mesh has taken it, and the mesh itself
+  // on top: refused before anything is allocated when both do not fit.
+  const std::uint64_t building = grid.size() * (sizeof(Vec3) + sizeof(float)) + cells * tets_per_cell * sizeof(TetMesh::Tet);
+  const std::string what = "a tetrahedralized mesh of " + std::to_string(cells * tets_per_cell) + " tetrahedra";
+  check_allocation(building + TetMesh::bytes_for(grid.size(), cells * tets_per_cell), what);
+  const MemoryCharge charge(building, what);
   std::vector<Vec3> points;
   points.reserve(grid.size());
   for (int k = 0; k < n[2]; ++k)

@@ -5,8 +5,9 @@
 # 2, 3 and 8; exact at a loose tolerance; adaptive against exact within its
 # tolerance; a 256^3 volume
 # read by bricks (each rank's memory shows it); then a rank that
-# cannot read its scene, mismatched scenes, a rank that dies and a mesh scene:
-# each a non-zero exit, a line naming the rank, and no output file.
+# cannot read its scene, mismatched scenes, a rank that dies, a rank that is
+# stopped (SIGSTOP) and a mesh scene: each a non-zero exit, a line naming the
+# rank, and no output file.
 set -u
 vri=$1 src=$(cd "$2" && pwd)
 tmp=$(mktemp -d)
@@ -107,6 +108,25 @@ timeout 120 "${mpirun[@]}" -np 1 "$vri" render "$good" "${out[@]}" --distributed
   -np 1 "$tmp/vri-link" render "$good" "${out[@]}" --distributed >"$tmp/log" 2>&1 ||
   { fail "the same vri through a link was refused:"; cat "$tmp/log"; }
 [ -e "$tmp/out.npy" ] && echo "ok: the same vri through a link renders" || fail "no image through a link"
+# Issue 47: a stopped rank held the job until an outside timeout. The
+# watchdog names it after 10 s of silence and ends the job.
+echo 'echo $$ > "$1"; shift; exec "$@"' >"$tmp/pid_then.sh"
+slow=(-o "$tmp/out.npy" --width 2048 --height 2048 -q --threads 1 --method exact --tolerance 1e-8 --distributed)
+rm -f "$tmp/out.npy" "$tmp/rank1.pid"
+start=$SECONDS
+timeout 120 "${mpirun[@]}" -np 1 "$vri" render "$good" "${slow[@]}" : \
+  -np 1 bash "$tmp/pid_then.sh" "$tmp/rank1.pid" "$vri" render "$good" "${slow[@]}" >"$tmp/log" 2>&1 &
+job=$!
+sleep 3
+kill -STOP "$(cat "$tmp/rank1.pid")"
+wait "$job"; status=$?
+kill -KILL "$(cat "$tmp/rank1.pid")" 2>/dev/null
+if [ "$status" -ne 0 ] && [ "$status" -ne 124 ] && grep -q "rank 1 has not been heard from" "$tmp/log" &&
+   [ ! -e "$tmp/out.npy" ]; then
+  echo "ok: a stopped rank is named and the job ended after $((SECONDS - start)) s"
+else
+  fail "a stopped rank (exit $status after $((SECONDS - start)) s):"; cat "$tmp/log"
+fi
 # Issue 46: coupled's steps depend on the transmittance in front (1.7e-2 apart on 2 ranks).
 refused "adaptive coupled" "rank 0: adaptive --strategy coupled takes its steps by the transmittance" \
   -np 2 "$vri" render "$good" "${out[@]}" --method adaptive --strategy coupled

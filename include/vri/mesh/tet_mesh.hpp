@@ -29,6 +29,10 @@ class TetMesh {
   using Tet = std::array<std::int32_t, 4>;
 
   TetMesh(std::vector<Vec3> points, std::vector<Tet> tets, std::vector<float> scalars);
+  // The bytes a mesh of this size holds (and charges to the memory budget).
+  static std::uint64_t bytes_for(std::uint64_t points, std::uint64_t tets) {
+    return points * (sizeof(Vec3) + sizeof(float)) + tets * (sizeof(Tet) + 4 * sizeof(std::int32_t));
+  }
 
   const std::vector<Vec3>& points() const { return points_; }
   const std::vector<Tet>& tets() const { return tets_; }
