@@ -1,9 +1,11 @@
 #include "vri/io/grid_region.hpp"
 
 #include <algorithm>
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -37,19 +39,43 @@ GridVolume::Samples read_region(ScalarType type, Endian endian, std::array<int, 
   check_region(region, dims);
   const Rows rows{dims, region, scalar_type_size(type)};
   return GridVolume::decode(type, endian, region.points(), [&](std::span<std::byte> out) {
+    // The region's rows are packed in `out`; a run grows while the next row
+    // follows the last in the file too.
+    std::uint64_t run_file = 0, run_out = 0, run_bytes = 0;
     for (int k = region.lo[2]; k <= region.hi[2]; ++k)
-      for (int j = region.lo[1]; j <= region.hi[1]; ++j)
-        read(rows.in_file(j, k), out.subspan(rows.in_region(j, k), rows.row_bytes()));
+      for (int j = region.lo[1]; j <= region.hi[1]; ++j) {
+        const std::uint64_t file = rows.in_file(j, k);
+        if (run_bytes && file == run_file + run_bytes) {
+          run_bytes += rows.row_bytes();
+          continue;
+        }
+        if (run_bytes) read(run_file, out.subspan(run_out, run_bytes));
+        run_file = file, run_out = rows.in_region(j, k), run_bytes = rows.row_bytes();
+      }
+    if (run_bytes) read(run_file, out.subspan(run_out, run_bytes));
   });
 }
 
 GridVolume::Samples read_region_from_file(const std::filesystem::path& path, std::uint64_t start, ScalarType type,
                                           Endian endian, std::array<int, 3> dims, const GridRegion& region) {
   require_regular_file(path);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
+  struct Fd {
+    int fd;
+    ~Fd() {
+      if (fd >= 0) ::close(fd);
+    }
+  } file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  if (file.fd < 0) throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
   return read_region(type, endian, dims, region, [&](std::uint64_t offset, std::span<std::byte> out) {
-    read_stream_range(in, path, start + offset, out);
+    std::size_t done = 0;
+    while (done < out.size()) {
+      const ssize_t n = ::pread(file.fd, out.data() + done, out.size() - done, off_t(start + offset + done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0)
+        throw FileError("cannot read " + std::to_string(out.size()) + " bytes at " + std::to_string(start + offset) +
+                        " of '" + path.string() + "'" + (n < 0 ? std::string(": ") + std::strerror(errno) : ""));
+      done += std::size_t(n);
+    }
   });
 }
 

@@ -14,12 +14,15 @@
 namespace vri {
 
 // The region's samples from an x-fastest layout of `dims` samples of `type`:
-// `read(byte offset, out)` fills `out` from the layout, one call per row.
+// `read(byte offset, out)` fills `out` from the layout, one call per run of
+// rows that lie end to end in the layout (a whole plane, or the whole
+// region, when it spans the grid's width), so nothing outside it is read.
 GridVolume::Samples read_region(ScalarType type, Endian endian, std::array<int, 3> dims, const GridRegion& region,
                                 const std::function<void(std::uint64_t, std::span<std::byte>)>& read);
 
-// The same from a file holding the layout from byte `start` (one open, a
-// seek and a read per row).
+// The same from a file holding the layout from byte `start`: one pread a run,
+// straight into the samples (issue 47: an ifstream's 8 KiB buffer, refilled
+// after every seek, read 7.7 times a brick's bytes).
 GridVolume::Samples read_region_from_file(const std::filesystem::path& path, std::uint64_t start, ScalarType type,
                                           Endian endian, std::array<int, 3> dims, const GridRegion& region);
 
