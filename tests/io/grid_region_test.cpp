@@ -66,7 +66,7 @@ TEST(GridRegion, ReadsRunsOfRowsAndNothingElse) {
   using Calls = std::vector<std::pair<std::uint64_t, std::size_t>>;
   EXPECT_EQ(reads({{0, 0, 0}, {7, 4, 3}}), (Calls{{0, 160}}));                         // the whole grid: one read
   EXPECT_EQ(reads({{0, 1, 1}, {7, 3, 2}}), (Calls{{48, 24}, {88, 24}}));                // full width: a plane's rows at once
-  EXPECT_EQ(reads({{2, 1, 0}, {4, 2, 0}}), (Calls{{10, 3}, {18, 3}}));                  // part of the width: row by row
+  EXPECT_EQ(reads({{2, 1, 0}, {4, 2, 1}}), (Calls{{10, 3}, {18, 3}, {50, 3}, {58, 3}}));  // part of the width: row by row
   std::uint64_t bytes = 0;
   for (const auto& [offset, size] : reads(kRegion)) bytes += size;
   EXPECT_EQ(bytes, 5u * 2 * 3);

@@ -17,6 +17,7 @@
 
 #include "gpu_against_cpu.hpp"
 #include "gpu_array.hpp"
+#include "gpu_scene_data.hpp"
 #include "mesh/mesh_test_support.hpp"
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
@@ -56,6 +57,19 @@ TEST(GpuArray, SplitsIntoPartsAndReadsBack) {
     ADD_FAILURE() << "five parts accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("the huge table"), std::string::npos) << e.what();
+  }
+}
+
+// Issue 47: four 2 GiB buffers hold 2^33 uint8 voxels, which the shaders'
+// 32-bit offsets would wrap; such a volume is refused before any upload.
+TEST(GpuArray, VolumesBeyondTheShadersOffsetsAreRefused) {
+  EXPECT_NO_THROW(vulkan::check_shader_addressable(GridVolume::kMaxSamples));
+  EXPECT_NO_THROW(vulkan::check_shader_addressable(0xffffffffULL / 3));
+  try {
+    vulkan::check_shader_addressable(std::uint64_t{1} << 32);
+    ADD_FAILURE() << "2^32 voxels accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("32-bit offsets"), std::string::npos) << e.what();
   }
 }
 

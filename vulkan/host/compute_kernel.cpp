@@ -11,6 +11,10 @@ ComputeKernel::ComputeKernel(std::shared_ptr<const VulkanDevice> device, std::sp
     : device_(std::move(device)), buffers_(buffers), push_bytes_(push_bytes) {
   const Api& api = device_->api();
   const VkDevice d = device_->device();
+  if (static_cast<std::uint32_t>(buffers_) > device_->max_storage_buffers_per_stage())
+    throw Error("vulkan: a kernel binds " + std::to_string(buffers_) + " storage buffers, over the " +
+                std::to_string(device_->max_storage_buffers_per_stage()) + " this device allows a shader stage (" +
+                device_->info().name + "); use --backend cpu");
   try {
     VkShaderModuleCreateInfo m{};
     m.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;

@@ -32,8 +32,17 @@ std::span<const std::byte> as_bytes_of(const std::vector<T>& v) {
 
 }  // namespace
 
+void check_shader_addressable(std::uint64_t voxels) {
+  constexpr std::uint64_t kMost = 0xffffffffULL / 3;  // 3 gradient floats a voxel, one uint offset
+  if (voxels > kMost)
+    throw Error("vulkan: a volume of " + std::to_string(voxels) + " voxels is beyond the shaders' 32-bit offsets (at most " +
+                std::to_string(kMost) + "); use --backend cpu");
+}
+
 GpuVolume::GpuVolume(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume)
-    : samples(std::move(device), word_bytes(volume.bytes()), "the volume's samples"), type(type_code(volume)) {
+    : samples((check_shader_addressable(volume.size()), std::move(device)), word_bytes(volume.bytes()),
+              "the volume's samples"),
+      type(type_code(volume)) {
   volume.visit([&](auto v) { samples.upload(std::as_bytes(v)); });
 }
 

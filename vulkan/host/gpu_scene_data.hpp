@@ -17,6 +17,15 @@
 
 namespace vri::vulkan {
 
+// The shaders address voxels with 32-bit unsigned offsets (grid_sampler.glsl:
+// the sample index, 3 x it for the gradients' floats; a uint8 volume's index
+// is 4 x its word's). vri::Error for a volume whose offsets would wrap, before
+// anything is allocated: four 2 GiB buffers hold 2^33 uint8 voxels, which
+// would be sampled at wrapped offsets, a silent wrong image (issue 47).
+// GridVolume::kMaxSamples (2^30) keeps every grid under it today; this holds
+// the line when that cap rises (bricked volumes, issue 49).
+void check_shader_addressable(std::uint64_t voxels);
+
 struct GpuVolume {
   GpuVolume(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume);
   GpuArray samples;

@@ -46,6 +46,16 @@ VkDebugUtilsMessengerCreateInfoEXT messenger_info() {
   return m;
 }
 
+bool instance_has(Api& api, const char* extension) {
+  std::uint32_t n = 0;
+  if (api.vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr) != VK_SUCCESS) return false;
+  std::vector<VkExtensionProperties> all(n);
+  api.vkEnumerateInstanceExtensionProperties(nullptr, &n, all.data());
+  for (const auto& e : all)
+    if (std::strcmp(e.extensionName, extension) == 0) return true;
+  return false;
+}
+
 // An instance of Vulkan 1.1, with the validation layer and its messenger when `validate`.
 Instance create_instance(Api& api, bool validate) {
   if (validate) {
@@ -63,18 +73,25 @@ Instance create_instance(Api& api, bool validate) {
   app.pApplicationName = "vri";
   app.pEngineName = "vri";
   app.apiVersion = VK_API_VERSION_1_1;
-  const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
+  std::vector<const char*> extensions;
   const VkDebugUtilsMessengerCreateInfoEXT messenger = messenger_info();
   VkInstanceCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
   info.pApplicationInfo = &app;
+  // Drivers that implement Vulkan on another API (MoltenVK on Metal) are
+  // listed only when asked for by this extension.
+  if (instance_has(api, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {
+    extensions.push_back(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
+    info.flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
+  }
   if (validate) {
     info.enabledLayerCount = 1;
     info.ppEnabledLayerNames = &kValidationLayer;
-    info.enabledExtensionCount = 1;
-    info.ppEnabledExtensionNames = extensions;
+    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     info.pNext = &messenger;  // messages of vkCreateInstance itself
   }
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   Instance out;
   const VkResult r = api.vkCreateInstance(&info, nullptr, &out.handle);
   if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
@@ -221,6 +238,7 @@ VulkanDevice::VulkanDevice() : api_(global_api()) {
     api_.vkGetPhysicalDeviceProperties(physical_, &p);
     max_groups_x_ = p.limits.maxComputeWorkGroupCount[0];
     max_storage_bytes_ = p.limits.maxStorageBufferRange;
+    max_buffers_per_stage_ = p.limits.maxPerStageDescriptorStorageBuffers;
     // Tests pretend a smaller limit to run the split arrays and the chunked rays on small scenes.
     if (const char* v = std::getenv("VRI_VULKAN_MAX_BUFFER_BYTES"); v && *v) {
       char* end = nullptr;
@@ -241,6 +259,17 @@ VulkanDevice::VulkanDevice() : api_(global_api()) {
     info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue;
+    // A portability driver's device must be created with its subset extension.
+    std::uint32_t n_extensions = 0;
+    api_.vkEnumerateDeviceExtensionProperties(physical_, nullptr, &n_extensions, nullptr);
+    std::vector<VkExtensionProperties> device_extensions(n_extensions);
+    api_.vkEnumerateDeviceExtensionProperties(physical_, nullptr, &n_extensions, device_extensions.data());
+    const char* subset = "VK_KHR_portability_subset";
+    for (const auto& e : device_extensions)
+      if (std::strcmp(e.extensionName, subset) == 0) {
+        info.enabledExtensionCount = 1;
+        info.ppEnabledExtensionNames = &subset;
+      }
     check(api_.vkCreateDevice(physical_, &info, nullptr, &device_), "vkCreateDevice");
     api_.load_device(device_);
     api_.vkGetDeviceQueue(device_, queue_family_, 0, &queue_);

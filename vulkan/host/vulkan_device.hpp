@@ -57,6 +57,8 @@ class VulkanDevice {
   // The largest storage buffer (maxStorageBufferRange, or less where
   // VRI_VULKAN_MAX_BUFFER_BYTES says so).
   std::uint64_t max_storage_buffer_bytes() const { return max_storage_bytes_; }
+  // Storage buffers one kernel may bind (maxPerStageDescriptorStorageBuffers).
+  std::uint32_t max_storage_buffers_per_stage() const { return max_buffers_per_stage_; }
   // log2 of the bytes in each part of a GpuArray (gpu_array.hpp): the largest
   // power of two a storage buffer holds, at most 2^31.
   std::uint32_t part_shift() const { return part_shift_; }
@@ -87,7 +89,7 @@ class VulkanDevice {
   VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
   VkPhysicalDeviceMemoryProperties memory_{};
-  std::uint32_t queue_family_ = 0, max_groups_x_ = 0;
+  std::uint32_t queue_family_ = 0, max_groups_x_ = 0, max_buffers_per_stage_ = 0;
   std::uint64_t max_storage_bytes_ = 0;
   std::uint32_t part_shift_ = 0;
   DeviceInfo info_;
