@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/cli_support.hpp"
+#include "vri/core/error.hpp"
 #include "vulkan_device.hpp"
 
 namespace vri::test {
@@ -21,6 +22,32 @@ TEST(VulkanDevice, ListsAUsableDeviceAndSharesIt) {
   EXPECT_FALSE(a->info().name.empty());
   EXPECT_TRUE(a->validating()) << "the tests run with the validation layer (validation_on.cpp)";
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
+}
+
+// A discrete GPU without resizable BAR: 8 GiB of VRAM the host cannot map,
+// a 256 MiB window it can, and host memory. Device-local buffers go to the
+// 8 GiB heap (written through staging), not to the window.
+TEST(VulkanDevice, DeviceLocalBuffersTakeTheLargestHeap) {
+  VkPhysicalDeviceMemoryProperties m{};
+  m.memoryHeapCount = 3;
+  m.memoryHeaps[0] = {std::uint64_t{8} << 30, VK_MEMORY_HEAP_DEVICE_LOCAL_BIT};
+  m.memoryHeaps[1] = {std::uint64_t{256} << 20, VK_MEMORY_HEAP_DEVICE_LOCAL_BIT};
+  m.memoryHeaps[2] = {std::uint64_t{32} << 30, 0};
+  const VkMemoryPropertyFlags local = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
+                              host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  m.memoryTypeCount = 3;
+  m.memoryTypes[0] = {host, 2};
+  m.memoryTypes[1] = {local | host, 1};
+  m.memoryTypes[2] = {local, 0};
+  EXPECT_EQ(vulkan::choose_memory_type(m, 0b111, local, host), 2u);
+  EXPECT_EQ(vulkan::choose_memory_type(m, 0b011, local, host), 1u);  // only the window allowed
+  EXPECT_EQ(vulkan::choose_memory_type(m, 0b111, host, 0), 0u);      // staging
+  // Unified memory (lavapipe, integrated GPUs): the one heap, mappable.
+  m.memoryHeapCount = 1;
+  m.memoryTypeCount = 1;
+  m.memoryTypes[0] = {local | host, 0};
+  EXPECT_EQ(vulkan::choose_memory_type(m, 0b1, local, host), 0u);
+  EXPECT_THROW(vulkan::choose_memory_type(m, 0b10, local, host), Error);
 }
 
 TEST(VulkanCli, DevicesAndBackendFlag) {

@@ -309,18 +309,30 @@ void VulkanDevice::release() noexcept {
   instance_ = VK_NULL_HANDLE, messenger_ = VK_NULL_HANDLE;
 }
 
-std::uint32_t VulkanDevice::memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,
-                                        VkMemoryPropertyFlags preferred) const {
+std::uint32_t choose_memory_type(const VkPhysicalDeviceMemoryProperties& memory, std::uint32_t type_bits,
+                                 VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) {
+  auto allowed = [&](std::uint32_t i) {
+    return (type_bits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & required) == required;
+  };
+  int heap = -1;  // with device-local required: the largest heap such a type lives in
+  if (required & VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT)
+    for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
+      const int h = static_cast<int>(memory.memoryTypes[i].heapIndex);
+      if (allowed(i) && (heap < 0 || memory.memoryHeaps[h].size > memory.memoryHeaps[heap].size)) heap = h;
+    }
   int fallback = -1;
-  for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
-    if (!(type_bits & (1u << i))) continue;
-    const VkMemoryPropertyFlags f = memory_.memoryTypes[i].propertyFlags;
-    if ((f & required) != required) continue;
-    if ((f & preferred) == preferred) return i;
+  for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
+    if (!allowed(i) || (heap >= 0 && static_cast<int>(memory.memoryTypes[i].heapIndex) != heap)) continue;
+    if ((memory.memoryTypes[i].propertyFlags & preferred) == preferred) return i;
     if (fallback < 0) fallback = static_cast<int>(i);
   }
   if (fallback < 0) throw Error("vulkan: the device has no suitable memory type");
   return static_cast<std::uint32_t>(fallback);
+}
+
+std::uint32_t VulkanDevice::memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,
+                                        VkMemoryPropertyFlags preferred) const {
+  return choose_memory_type(memory_, type_bits, required, preferred);
 }
 
 void VulkanDevice::begin() const {

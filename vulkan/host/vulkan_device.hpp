@@ -27,6 +27,15 @@ struct DeviceInfo {
   std::string why_not;     // when not usable
 };
 
+// The memory type memory_type() picks from `memory`: one with all of
+// `required` among those `type_bits` allows, preferring one with `preferred`
+// too. Where device-local memory is required, only the largest device-local
+// heap is taken (issue 47): a discrete GPU without resizable BAR also has a
+// ~256 MiB device-local heap that the host can map, and preferring it for
+// mapping filled it; the big heap is then written through a staging buffer.
+std::uint32_t choose_memory_type(const VkPhysicalDeviceMemoryProperties& memory, std::uint32_t type_bits,
+                                 VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred);
+
 class VulkanDevice {
  public:
   // The process's device, created on first use and kept until the process
@@ -49,7 +58,8 @@ class VulkanDevice {
   // Whether the validation layer watches this device (VRI_VULKAN_VALIDATION).
   bool validating() const { return messenger_ != VK_NULL_HANDLE; }
   // A memory type with all of `required` among those `type_bits` allows
-  // (preferring one that also has `preferred`); vri::Error if none.
+  // (preferring one that also has `preferred`); vri::Error if none. See
+  // choose_memory_type.
   std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,
                             VkMemoryPropertyFlags preferred = 0) const;
   VkMemoryPropertyFlags memory_flags(std::uint32_t type) const { return memory_.memoryTypes[type].propertyFlags; }
