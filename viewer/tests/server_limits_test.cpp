@@ -12,13 +12,7 @@
 namespace vri::viewer {
 namespace {
 
-using server_testing::ServerFixture;
-using nlohmann::json;
-namespace beast = boost::beast;
-namespace http = beast::http;
-namespace websocket = beast::websocket;
-namespace net = boost::asio;
-using tcp = net::ip::tcp;
+using namespace server_testing;  // the fixture, and the names of Beast and Asio it uses
 
 int open_descriptors() {
   return int(std::distance(std::filesystem::directory_iterator("/proc/self/fd"), {}));

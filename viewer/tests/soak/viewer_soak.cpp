@@ -36,13 +36,13 @@ extern char** environ;
 
 namespace {
 
+using Clock = std::chrono::steady_clock;
+using json = nlohmann::json;
+namespace net = boost::asio;
+using tcp = net::ip::tcp;
 namespace beast = boost::beast;
 namespace http = beast::http;
 namespace websocket = beast::websocket;
-namespace net = boost::asio;
-using tcp = net::ip::tcp;
-using nlohmann::json;
-using Clock = std::chrono::steady_clock;
 
 struct Server {
   pid_t pid = -1;
