@@ -50,6 +50,21 @@ TEST(VulkanDevice, DeviceLocalBuffersTakeTheLargestHeap) {
   EXPECT_THROW(vulkan::choose_memory_type(m, 0b10, local, host), Error);
 }
 
+// Issue 47: under GPU-assisted validation the shared device was destroyed
+// from a static destructor after the layer had torn itself down: exit 139
+// once the image was written. Now released by an atexit handler first.
+TEST(VulkanCli, ExitsCleanlyUnderGpuAssistedValidation) {
+  TempDir dir;
+  const ProcessResult r = run("render " + source_path("scenes/neghip.json") + " --backend vulkan --method preint1 --width 24 "
+                                  "--height 24 -q -o " + (dir / "v.png").string(),
+                              dir,
+                              "VRI_VULKAN_VALIDATION=1 "
+                              "VK_LAYER_ENABLES=VK_VALIDATION_FEATURE_ENABLE_GPU_ASSISTED_EXT ");
+  if (r.err.find("validation layer is missing") != std::string::npos) GTEST_SKIP() << r.err;
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "v.png"));
+}
+
 TEST(VulkanCli, DevicesAndBackendFlag) {
   TempDir dir;
   const ProcessResult list = run("devices", dir);

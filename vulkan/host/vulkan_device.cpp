@@ -199,7 +199,15 @@ std::shared_ptr<VulkanDevice> VulkanDevice::shared() {
   static std::mutex mutex;
   static std::shared_ptr<VulkanDevice> current;
   std::lock_guard lock(mutex);
-  if (!current) current.reset(new VulkanDevice());
+  if (!current) {
+    current.reset(new VulkanDevice());
+    // Released at exit before the layers the instance loaded tear their own
+    // statics down: an atexit handler registered after them runs before them.
+    // Left to `current`'s destructor (registered before), the device was
+    // destroyed through a torn-down GPU-assisted validation layer: exit 139
+    // after the image was written (issue 47).
+    std::atexit([] { current.reset(); });
+  }
   return current;
 }
 
