@@ -5,6 +5,7 @@
 #include <string>
 
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 
 namespace vri {
 
@@ -37,7 +38,7 @@ Camera::Camera(const CameraSpec& spec) : spec_(spec) {
   aspect_ = double(spec.width) / spec.height;
   if (spec.projection == Projection::Perspective) {
     if (!(spec.fov_y > 0 && spec.fov_y < 180))
-      throw Error("camera fov_y must be in (0, 180) degrees, got " + std::to_string(spec.fov_y));
+      throw Error("camera fov_y must be in (0, 180) degrees, got " + format_g(spec.fov_y));
     half_h_ = std::tan(spec.fov_y * std::numbers::pi / 360.0);
   } else {
     if (!(spec.ortho_height > 0) || !std::isfinite(spec.ortho_height))

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 
 namespace vri {
 
@@ -58,10 +59,19 @@ CameraSpec move_camera(CameraSpec spec, double azimuth, double elevation, double
   up = rotate(up, normalize(offset), -roll * kDegree);
   spec.eye = spec.target + offset;
   spec.up = up;
-  if (spec.projection == Projection::Perspective)
+  // The zoom is what the user gave: a view it makes impossible is said of it,
+  // not of the fov_y or height it computed (issue 47).
+  if (spec.projection == Projection::Perspective) {
     spec.fov_y = 2 * std::atan(std::tan(spec.fov_y * kDegree / 2) / zoom) / kDegree;
-  else
+    if (!(spec.fov_y > 0 && spec.fov_y < 180))
+      throw Error("camera zoom " + format_g(zoom) + " makes fov_y " + format_g(spec.fov_y) +
+                  " degrees; it must stay in (0, 180)");
+  } else {
     spec.ortho_height /= zoom;
+    if (!(spec.ortho_height > 0) || !std::isfinite(spec.ortho_height))
+      throw Error("camera zoom " + format_g(zoom) + " makes ortho_height " + format_g(spec.ortho_height) +
+                  "; it must stay a positive number");
+  }
   return spec;
 }
 

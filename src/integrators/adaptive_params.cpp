@@ -1,6 +1,7 @@
 #include "vri/integrators/adaptive_params.hpp"
 
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 
 namespace vri {
 
@@ -13,7 +14,7 @@ AdaptiveStrategy parse_adaptive_strategy(const std::string& name) {
 
 void AdaptiveParams::validate() const {
   if (!(tolerance >= 1e-9 && tolerance <= 0.5))
-    throw Error("adaptive: tolerance must be in [1e-9, 0.5], got " + std::to_string(tolerance));
+    throw Error("adaptive: tolerance must be in [1e-9, 0.5], got " + format_g(tolerance));
   if (!(hmin >= 1e-3 && hmin <= h0 && h0 <= hmax && hmax <= 1e3))
     throw Error("adaptive: need 1e-3 <= hmin <= h0 <= hmax <= 1e3 voxel units, got hmin " +
                 std::to_string(hmin) + ", h0 " + std::to_string(h0) + ", hmax " + std::to_string(hmax));

@@ -7,6 +7,7 @@
 #include "cubic.hpp"
 #include "early_stop.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 
 namespace vri {
 
@@ -14,7 +15,7 @@ ExactIntegrator::ExactIntegrator(const GridVolume& volume, const TransferFunctio
                                  const Lighting& lighting)
     : volume_(volume), tolerance_(tolerance), pieces_(tf) {
   if (!(tolerance >= 1e-12 && tolerance <= 0.1))
-    throw Error("exact: tolerance must be in [1e-12, 0.1], got " + std::to_string(tolerance));
+    throw Error("exact: tolerance must be in [1e-12, 0.1], got " + format_g(tolerance));
   if (lighting.enabled) shader_.emplace(lighting, volume);
 }
 

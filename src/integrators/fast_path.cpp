@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 
 namespace vri {
 
@@ -24,7 +25,7 @@ namespace detail {
 Skipping::Skipping(const GridVolume& volume, ZeroOpacity zero, const FastPath& fast, const std::string& method)
     : footprint_{volume.whole_box(), {}}, termination_(fast.termination) {
   if (!(fast.termination >= 0 && fast.termination < 1))
-    throw Error(method + ": termination must be in [0, 1), got " + std::to_string(fast.termination));
+    throw Error(method + ": termination must be in [0, 1), got " + format_g(fast.termination));
   if (!fast.skip_empty) return;
   cells_ = std::make_unique<MacroCells>(volume);
   zero_.emplace(std::move(zero));

@@ -6,6 +6,7 @@
 #include "cubic.hpp"
 #include "early_stop.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 
 namespace vri {
 
@@ -13,7 +14,7 @@ MeshExactIntegrator::MeshExactIntegrator(const TetMesh& mesh, const TransferFunc
                                          const Lighting& lighting)
     : walk_(mesh), pieces_(tf), tolerance_(tolerance) {
   if (!(tolerance >= 1e-12 && tolerance <= 0.1))
-    throw Error("exact: tolerance must be in [1e-12, 0.1], got " + std::to_string(tolerance));
+    throw Error("exact: tolerance must be in [1e-12, 0.1], got " + format_g(tolerance));
   if (lighting.enabled) {
     gradients_.emplace(mesh);
     shader_.emplace(lighting, gradients_->flat_threshold());

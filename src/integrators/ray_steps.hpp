@@ -23,6 +23,7 @@
 #include <string>
 
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/core/rgba.hpp"
 #include "vri/volume/empty_space.hpp"
@@ -35,7 +36,7 @@ namespace vri::detail {
 // The step h in world units; `step` is in voxel units (1e-4 .. 1e4).
 inline double world_step(const GridVolume& volume, double step, const std::string& method) {
   if (!(step >= 1e-4 && step <= 1e4))
-    throw Error(method + ": step must be in [1e-4, 1e4] voxel units, got " + std::to_string(step));
+    throw Error(method + ": step must be in [1e-4, 1e4] voxel units, got " + format_g(step));
   return step * volume.voxel_unit();
 }
 

@@ -7,6 +7,7 @@
 #include "float_packet.hpp"
 #include "float_riemann.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 
 namespace vri {
 
@@ -25,7 +26,7 @@ RiemannIntegrator::RiemannIntegrator(const GridVolume& volume, const TransferFun
   if (lighting.enabled && float_path_)
     float_shading_ = std::make_unique<detail::FloatShading>(lighting, *shader_, float_sampler_);
   if (!(step >= 1e-4 && step <= 1e4))
-    throw Error("riemann: step must be in [1e-4, 1e4] voxel units, got " + std::to_string(step));
+    throw Error("riemann: step must be in [1e-4, 1e4] voxel units, got " + format_g(step));
   h_ = step * volume.voxel_unit();
 }
 

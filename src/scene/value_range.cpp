@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 #include "vri/core/memory_limit.hpp"
 #include "vri/volume/histogram.hpp"
 
@@ -15,8 +16,8 @@ namespace {
 
 void check_percentiles(double p_lo, double p_hi) {
   if (!(p_lo >= 0 && p_lo <= p_hi && p_hi <= 100))
-    throw Error("percentiles must satisfy 0 <= p_lo <= p_hi <= 100, got [" + std::to_string(p_lo) + ", " +
-                std::to_string(p_hi) + "]");
+    throw Error("percentiles must satisfy 0 <= p_lo <= p_hi <= 100, got [" + format_g(p_lo) + ", " +
+                format_g(p_hi) + "]");
 }
 
 // numpy's "linear" percentile of `values` (reordered: nth_element).

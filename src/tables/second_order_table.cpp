@@ -9,6 +9,7 @@
 #include "tables/second_order_chords.hpp"
 #include "tables/trilinear.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 #include "vri/tables/incremental_builder.hpp"
 #include "vri/tables/second_order_exact.hpp"
 #include "vri/tables/second_order_fast.hpp"
@@ -93,7 +94,7 @@ std::size_t SecondOrderLengthTable::bytes() const {
 void check_length_table(int lengths, double max_length, int n, int tables) {
   if (lengths < 2) throw Error("--lengths must be >= 2, got " + std::to_string(lengths));
   if (!(max_length > 0) || !std::isfinite(max_length))
-    throw Error("--max-length must be a positive number, got " + std::to_string(max_length));
+    throw Error("--max-length must be a positive number, got " + format_g(max_length));
   if (static_cast<std::size_t>(tables) * lengths * cube(n) > kMaxSecondOrderEntries)
     throw Error("a second-order table of " + (tables > 1 ? std::to_string(tables) + " x " : std::string()) +
                 std::to_string(lengths) + " lengths x " + std::to_string(n) + "^3 entries exceeds " +

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"
 #include "vri/tables/brute_builder.hpp"
 #include "vri/tables/engel_builder.hpp"
 #include "vri/tables/exact_builder.hpp"
@@ -24,7 +25,7 @@ LengthTable build_length_table(const TableBuilder& builder, const DiscreteTf& tf
 void check_length_tables(int lengths, double max_length, int n, int tables) {
   if (lengths < 2) throw Error("--lengths must be >= 2, got " + std::to_string(lengths));
   if (!(max_length > 0) || !std::isfinite(max_length))
-    throw Error("--max-length must be a positive number, got " + std::to_string(max_length));
+    throw Error("--max-length must be a positive number, got " + format_g(max_length));
   if (static_cast<std::size_t>(tables) * lengths * n * n > kMaxLengthTableEntries)
     throw Error("a table of " + (tables > 1 ? std::to_string(tables) + " x " : std::string()) +
                 std::to_string(lengths) + " x " + std::to_string(n) + " x " + std::to_string(n) +
@@ -44,7 +45,7 @@ std::unique_ptr<TableBuilder> make_table_builder(const std::string& name) {
 
 void check_slab_length(double length) {
   if (!(length > 0) || !std::isfinite(length))
-    throw Error("slab length must be a positive number, got " + std::to_string(length));
+    throw Error("slab length must be a positive number, got " + format_g(length));
 }
 
 }  // namespace vri

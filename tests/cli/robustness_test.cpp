@@ -82,6 +82,16 @@ TEST(CliRobustness, BackgroundOrthoHeightAndJitterAreCheckedEverywhere) {
   EXPECT_EQ(run("render " + scene + out + " --method riemann --jitter 7", dir).code, 0);
 }
 
+// Issue 47 defect 12: a message blames the value given, and prints numbers as
+// %g (1e-300, not 0.000000).
+TEST(CliRobustness, MessagesNameTheFlagGivenAndPrintItsNumber) {
+  test::TempDir dir;
+  const std::string scene = scene_with(dir, test::kGoodScene), out = " -o " + (dir / "out.npy").string();
+  expect_refused("render " + scene + out + " --zoom 1e-300", "camera zoom 1e-300 makes fov_y 180 degrees", dir);
+  expect_refused("render " + scene + out + " --method exact --tolerance 1e-300", "got 1e-300", dir);
+  expect_refused("render " + scene + out + " --method riemann --step 1e-300", "method.step 1e-300", dir);
+}
+
 TEST(CliRobustness, RayStepMustBeFinite) {  // defect 4
   test::TempDir dir;
   const std::string scene = scene_with(dir, test::kGoodScene);
