@@ -3,6 +3,7 @@
 // `vri table --backend vulkan`, and a machine without a driver getting one
 // clear line and no file.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include "cli/cli_support.hpp"
 #include "vri/core/error.hpp"
@@ -63,6 +64,30 @@ TEST(VulkanCli, ExitsCleanlyUnderGpuAssistedValidation) {
   if (r.err.find("validation layer is missing") != std::string::npos) GTEST_SKIP() << r.err;
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "v.png"));
+}
+
+// Issue 47: the host set up every ray of the image before the first chunk ran
+// (~88 bytes a pixel for riemann: 88 MiB at 1024^2, 1.87 GB at 4096^2), outside
+// --max-memory. Now one chunk's rays at a time, charged: a 1024^2 frame costs
+// the image (twice: the render and the file) and a chunk, about 64 MiB over
+// an 8^2 one on lavapipe, where it cost over 200.
+TEST(VulkanCli, RaysAreSetUpAChunkAtATime) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "resident memory is the sanitizer's here";
+#endif
+  TempDir dir;
+  const std::string render = "render " + source_path("scenes/neghip.json") + " --backend vulkan --method riemann -q";
+  auto peak_kib = [] {
+    rusage u{};
+    getrusage(RUSAGE_CHILDREN, &u);
+    return u.ru_maxrss;  // the largest child so far, KiB
+  };
+  ASSERT_EQ(run(render + " --width 8 --height 8 -o " + (dir / "small.npy").string(), dir).code, 0);
+  const long small = peak_kib();
+  const ProcessResult big =
+      run(render + " --width 1024 --height 1024 --max-memory 96M -o " + (dir / "big.npy").string(), dir);
+  ASSERT_EQ(big.code, 0) << big.err;
+  EXPECT_LT(peak_kib() - small, 120 * 1024) << "KiB over an 8x8 frame";
 }
 
 TEST(VulkanCli, DevicesAndBackendFlag) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "vri/core/memory_limit.hpp"
+
 namespace vri::vulkan {
 
 GridParams grid_params(const VulkanDevice& device, const GridVolume& volume, int type, double termination) {
@@ -21,17 +23,19 @@ GridParams grid_params(const VulkanDevice& device, const GridVolume& volume, int
 }
 
 Image run_pixels(const std::shared_ptr<const VulkanDevice>& device, const ComputeKernel& kernel, int width,
-                 int height, std::span<const GpuBuffer* const> inputs, std::span<const float> rays, int ray_floats,
+                 int height, std::span<const GpuBuffer* const> inputs, const RaySetup& rays, int ray_floats,
                  GridParams& grid, const void* params) {
   const std::size_t pixels = static_cast<std::size_t>(width) * height;
   const std::size_t ray_bytes = sizeof(float) * static_cast<std::size_t>(ray_floats), pixel_bytes = 4 * sizeof(float);
   const std::size_t chunk = std::max<std::size_t>(
-      64, std::min<std::size_t>({pixels, std::size_t{1} << 22, device->max_storage_buffer_bytes() / ray_bytes,
+      64, std::min<std::size_t>({pixels, kChunkPixels, device->max_storage_buffer_bytes() / ray_bytes,
                                  device->max_storage_buffer_bytes() / pixel_bytes}));
   Image image(width, height);
   for (std::size_t first = 0; first < pixels; first += chunk) {
     const std::size_t n = std::min(chunk, pixels - first);
-    const GpuBuffer ray_buffer(device, std::as_bytes(rays.subspan(first * ray_floats, n * ray_floats)), "the rays");
+    const MemoryCharge charge(n, ray_bytes, "the rays of a chunk of pixels");
+    const std::vector<float> chunk_rays = rays({first, n});
+    const GpuBuffer ray_buffer(device, std::as_bytes(std::span<const float>(chunk_rays)), "the rays");
     GpuBuffer image_buffer(device, n * pixel_bytes, "the image");
     const std::uint64_t groups = (n + 63) / 64;
     const auto gx = static_cast<std::uint32_t>(std::min<std::uint64_t>(groups, device->max_workgroups_x()));

@@ -8,7 +8,11 @@
 #include <memory>
 #include <span>
 
+#include <functional>
+#include <vector>
+
 #include "compute_kernel.hpp"
+#include "ray_setup.hpp"
 #include "vri/render/image.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -33,13 +37,16 @@ GridParams grid_params(const VulkanDevice& device, const GridVolume& volume, int
 
 // Runs `kernel` over width x height pixels with `inputs` bound at 0 .. n-1
 // and the image at n; the null entry of `inputs` is where the rays go:
-// `rays` holds ray_floats floats a pixel, row by row (ray_setup.hpp).
-// The pixels run in chunks whose rays and image each fit one storage buffer
-// (128 MiB on lavapipe: a 2048² image's rays would not). `params` is the
-// kernel's push-constant block and `grid` its first member, which this
-// completes (pixels, row_pixels).
+// `rays(span)` sets up ray_floats floats for each pixel of the span
+// (ray_setup.hpp). The pixels run in chunks of at most kChunkPixels whose
+// rays and image each fit one storage buffer (128 MiB on lavapipe), each
+// chunk's rays set up when it runs: the host holds one chunk's rays, not
+// the image's. `params` is the kernel's push-constant block and `grid` its
+// first member, which this completes (pixels, row_pixels).
+inline constexpr std::size_t kChunkPixels = std::size_t{1} << 18;
+using RaySetup = std::function<std::vector<float>(PixelSpan)>;
 Image run_pixels(const std::shared_ptr<const VulkanDevice>& device, const ComputeKernel& kernel, int width,
-                 int height, std::span<const GpuBuffer* const> inputs, std::span<const float> rays, int ray_floats,
+                 int height, std::span<const GpuBuffer* const> inputs, const RaySetup& rays, int ray_floats,
                  GridParams& grid, const void* params);
 
 }  // namespace vri::vulkan

@@ -66,7 +66,7 @@ Image VulkanAdaptive::render(const Camera& camera, const RenderOptions& options)
   const GridVolume& volume = scene_.grid();
   const MethodSpec& m = scene_.method;
   const double vu = volume.voxel_unit();
-  const std::vector<float> rays = entry_rays(camera, volume, options.threads);
+  const RaySetup rays = [&](PixelSpan span) { return entry_rays(camera, volume, span, options.threads); };
   Params p{grid_params(*device_, volume, volume_.type, 0),
            tf_.params(),
            shading_params(shading_, 1),

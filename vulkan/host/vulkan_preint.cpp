@@ -103,7 +103,9 @@ VulkanPreint::~VulkanPreint() = default;
 Image VulkanPreint::render(const Camera& camera, const RenderOptions& options) const {
   throw_if_cancelled(options);
   const GridVolume& volume = scene_.grid();
-  const std::vector<float> rays = slab_rays(steps_, camera, volume, tf_, lighting_, h_, options.threads);
+  const RaySetup rays = [&](PixelSpan span) {
+    return slab_rays(steps_, camera, volume, tf_, lighting_, h_, span, options.threads);
+  };
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
            {axis_->size(), axis_->lo(), axis_->scale(), shading_params(shading_, lighting_.interpolated() ? 2 : 1)},
            empty_->params};

@@ -83,7 +83,7 @@ Bindings VulkanPreint2Dual::inputs() const { return table_march_inputs(volume_, 
 Image VulkanPreint2Dual::render(const Camera& camera, const RenderOptions& options) const {
   throw_if_cancelled(options);
   const GridVolume& volume = scene_.grid();
-  const std::vector<float> rays = entry_rays(camera, volume, options.threads);
+  const RaySetup rays = [&](PixelSpan span) { return entry_rays(camera, volume, span, options.threads); };
   const FloatAxis axis(axis_);
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
            {axis.size(), axis.lo(), axis.scale(), shading_params(shading_, mode_)},

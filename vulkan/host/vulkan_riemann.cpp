@@ -52,7 +52,9 @@ Bindings VulkanRiemann::inputs() const {
 Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) const {
   throw_if_cancelled(options);
   const GridVolume& volume = scene_.grid();
-  const std::vector<float> rays = riemann_rays(camera, volume, h_, scene_.method.jitter, options.threads);
+  const RaySetup rays = [&](PixelSpan span) {
+    return riemann_rays(camera, volume, h_, scene_.method.jitter, span, options.threads);
+  };
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination), static_cast<float>(h_), tf_.lo,
            tf_.scale, FloatTransferFunction::kBins, tf_.segments, shading_params(shading_, 1), empty_->params};
   return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kRiemannRayFloats,

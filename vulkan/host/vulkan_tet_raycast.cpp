@@ -84,7 +84,9 @@ Bindings VulkanTetRaycast::inputs() const {
 
 Image VulkanTetRaycast::render(const Camera& camera, const RenderOptions& options) const {
   throw_if_cancelled(options);
-  const std::vector<float> rays = mesh_rays(camera, scene_.mesh(), mesh_.centre, options.threads);
+  const RaySetup rays = [&](PixelSpan span) {
+    return mesh_rays(camera, scene_.mesh(), mesh_.centre, span, options.threads);
+  };
   const FloatAxis axis(axis_);
   GridParams grid{};
   grid.part_shift = device_->part_shift();
