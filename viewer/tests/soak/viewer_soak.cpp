@@ -69,8 +69,9 @@ Server start(const char* vri, const char* scene, long max_memory_mib) {
   const std::string budget = std::to_string(max_memory_mib) + "M";
   const char* argv[] = {vri, "--max-memory", budget.c_str(), "view", scene, "--port", "0", "--threads", "1", nullptr};
   Server s;
-  if (posix_spawn(&s.pid, vri, &actions, nullptr, const_cast<char**>(argv), environ) != 0)
-    throw std::runtime_error(std::string("cannot start ") + vri);
+  const int spawned = posix_spawn(&s.pid, vri, &actions, nullptr, const_cast<char**>(argv), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) throw std::runtime_error(std::string("cannot start ") + vri);
   close(out[1]);
   std::string line;
   char c;
