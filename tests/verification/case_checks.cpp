@@ -73,6 +73,28 @@ double rms(const Image& a, const Image& b) {
   return std::sqrt(s / a.data().size());
 }
 
+// How far the float path may stray from the double path here: 1e-4, plus
+// what a scalar error of 1e-6 of the data range (float sample positions and
+// interpolation) moves a sample's colour or its alpha over a step of `step`
+// voxels on the steepest segment of the transfer function. nullopt where two
+// control points (almost) coincide: a sample that close to a step may take
+// either side of it in float, so no finite bound holds.
+std::optional<double> float_double_bound(const Scene& scene, double step) {
+  const auto& p = scene.transfer_function.points();
+  const GridVolume& grid = scene.grid();
+  const double range = std::max(double(grid.max_value()) - grid.min_value(), 1e-30);
+  const double h = step * grid.voxel_unit();
+  double steepest = 0;  // change per unit scalar
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    const double ds = p[i].s - p[i - 1].s;
+    if (!(ds > 1e-6 * range)) return std::nullopt;
+    const double alpha = std::abs(std::exp(-p[i].tau * h) - std::exp(-p[i - 1].tau * h));
+    for (double d : {std::abs(p[i].r - p[i - 1].r), std::abs(p[i].g - p[i - 1].g), std::abs(p[i].b - p[i - 1].b), alpha})
+      steepest = std::max(steepest, d / ds);
+  }
+  return kFloatAgainstDouble + 1e-6 * range * steepest;
+}
+
 bool same_bytes(const Image& a, const Image& b) {
   return std::memcmp(a.data().data(), b.data().data(), a.data().size_bytes()) == 0;
 }
@@ -96,7 +118,17 @@ std::vector<Violation> check_case(const Case& c, const Checks& which) {
     if (image) run.bounds(label, *image);
     return image;
   };
-  rendered("preint2-dual", {.name = "preint2-dual"});
+  // The float path against the double path of the same method and image.
+  auto float_vs_double = [&](const std::string& label, const Image& image, MethodSpec m) {
+    const std::optional<double> bound = float_double_bound(c.scene, m.step > 0 ? m.step : 1.0);
+    if (!bound) return;
+    m.fast.float_math = false;
+    const auto twin = run.render(label + " double", m);
+    if (!twin) return;
+    const double e = max_difference(image, *twin);
+    if (!(e <= *bound)) run.record("float-vs-double", label, format("max |float - double| %.3g (bound %.3g)", e, *bound));
+  };
+  if (const auto dual = rendered("preint2-dual", {.name = "preint2-dual"})) float_vs_double("preint2-dual", *dual, {.name = "preint2-dual"});
   rendered("adaptive coupled", {.name = "adaptive", .tolerance = 1e-3, .strategy = "coupled"});
   if (auto g = rendered("adaptive guaranteed", {.name = "adaptive", .tolerance = 1e-3, .strategy = "guaranteed"});
       g && exact) {
@@ -132,6 +164,7 @@ std::vector<Violation> check_case(const Case& c, const Checks& which) {
       if (!image) break;
       run.bounds(label, *image);
       if (step == 0.5) {
+        float_vs_double(label, *image, scene.method);
         scene.method.fast.skip_empty = false;
         if (const auto plain = run.render(label + " no skipping", scene.method); plain && !same_bytes(*image, *plain))
           run.record("skipping", method, "skipping changed the image");
@@ -147,7 +180,11 @@ std::vector<Violation> check_case(const Case& c, const Checks& which) {
   const auto skipped = run.render("riemann", riemann);
   riemann.fast.skip_empty = false;
   const auto plain = run.render("riemann no skipping", riemann);
-  if (skipped) run.bounds("riemann", *skipped);
+  if (skipped) {
+    run.bounds("riemann", *skipped);
+    MethodSpec m{.name = "riemann", .step = 0.5};
+    float_vs_double("riemann", *skipped, m);
+  }
   if (skipped && plain && !same_bytes(*skipped, *plain)) run.record("skipping", "riemann", "skipping changed the image");
   return out;
 }

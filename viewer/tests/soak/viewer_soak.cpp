@@ -243,17 +243,27 @@ class Client {
     if (!welcome.is_object() || welcome["type"] != "welcome") return failure("no welcome");
     const json scene = welcome["scene"];
     const int messages = pick_in(1, 8);
+    int kind = -1;
     for (int i = 0; i < messages; ++i) {
       const std::int64_t seq = ++seq_;
-      const int kind = pick_in(0, 9);
+      const int previous = kind;
+      kind = pick_in(0, 9);
       ws->text(true);
+      if (!beast::get_lowest_layer(*ws).socket().is_open())
+        return failure("page closed after a message of kind " + std::to_string(previous));
       if (kind < 5) {
-        ws->write(net::buffer(render(scene, seq).dump()));
+        beast::error_code wec;
+        ws->write(net::buffer(render(scene, seq).dump()), wec);
+        if (wec) return failure("a render could not be sent (" + wec.message() + ") after a message of kind " +
+                                std::to_string(previous));
         if (pick_in(0, 9) == 0) break;  // leaves mid render
         if (!await(*ws, seq)) return failure("no frame for a render");
       } else if (kind < 9) {
         const auto [text, expect] = invalid(scene, seq);
-        ws->write(net::buffer(text));
+        beast::error_code wec;
+        ws->write(net::buffer(text), wec);
+        if (wec) return failure("an invalid message could not be sent (" + wec.message() + ") after a message of kind " +
+                                std::to_string(previous));
         if (!await(*ws, expect)) return failure("no error for " + text.substr(0, 60));
       } else {
         ws->binary(true);
