@@ -83,10 +83,11 @@ void ClientSession::enqueue(Outgoing message) {
     // A frame of an older request than this one will not be seen: drop it
     // unless it is already leaving (the front, while writing).
     const auto first = queue_.begin() + (writing_ ? 1 : 0);
-    const auto stale = std::remove_if(first, queue_.end(),
-                                      [&](const Outgoing& q) { return q.binary && q.seq < message.seq; });
-    for (auto it = stale; it != queue_.end(); ++it) queued_bytes_ -= it->data->size();
-    queue_.erase(stale, queue_.end());
+    const auto is_stale = [&](const Outgoing& q) { return q.binary && q.seq < message.seq; };
+    // Counted before remove_if, which leaves the tail's elements moved from.
+    for (auto it = first; it != queue_.end(); ++it)
+      if (is_stale(*it)) queued_bytes_ -= it->data->size();
+    queue_.erase(std::remove_if(first, queue_.end(), is_stale), queue_.end());
   }
   queued_bytes_ += message.data->size();
   queue_.push_back(std::move(message));
