@@ -26,6 +26,38 @@ std::string over_limit(std::uint64_t bytes, const std::string& what, std::uint64
   if (held) m += " with " + format_bytes(held) + " already held";
   return m;
 }
+
+// Whether `bytes` more fit under `limit` with `held` held (no overflow).
+bool fits(std::uint64_t bytes, std::uint64_t held, std::uint64_t limit) { return bytes <= limit - std::min(held, limit); }
+
+[[noreturn]] void refuse_process(std::uint64_t bytes, const std::string& what, std::uint64_t held) {
+  throw Error(over_limit(bytes, what, memory_limit(), held, "the memory limit") +
+              "; raise it with --max-memory (e.g. --max-memory 64G)");
+}
+
+[[noreturn]] void refuse_account(std::uint64_t bytes, const std::string& what, const MemoryAccount& a,
+                                 std::uint64_t held) {
+  throw Error(over_limit(bytes, what, a.limit(), held, a.name()));
+}
+
+// Adds `bytes` to `used` if they fit under `limit`, in one step (compare-
+// exchange), so two threads cannot both pass a check only one of them fits;
+// else false, with `held` what was there.
+bool add_if_fits(std::atomic<std::uint64_t>& used, std::uint64_t bytes, std::uint64_t limit, std::uint64_t& held) {
+  held = used.load(std::memory_order_relaxed);
+  do {
+    if (!fits(bytes, held, limit)) return false;
+  } while (!used.compare_exchange_weak(held, held + bytes, std::memory_order_relaxed));
+  return true;
+}
+
+std::uint64_t product(std::uint64_t count, std::uint64_t size, const std::string& what) {
+  std::uint64_t bytes;
+  if (__builtin_mul_overflow(count, size, &bytes))
+    throw Error(what + " would need more than 2^64 bytes (" + std::to_string(count) + " x " +
+                std::to_string(size) + ")");
+  return bytes;
+}
 }  // namespace
 
 std::uint64_t default_memory_limit() {
@@ -55,51 +87,31 @@ std::string format_bytes(std::uint64_t bytes) {
 std::uint64_t memory_in_use() { return g_in_use.load(std::memory_order_relaxed); }
 
 void check_allocation(std::uint64_t bytes, const std::string& what) {
-  const std::uint64_t limit = memory_limit(), held = memory_in_use();
-  if (bytes > limit || bytes > limit - std::min(held, limit))
-    throw Error(over_limit(bytes, what, limit, held, "the memory limit") +
-                "; raise it with --max-memory (e.g. --max-memory 64G)");
-  if (const MemoryAccount* a = t_account) {
-    const std::uint64_t mine = a->in_use();
-    if (bytes > a->limit() || bytes > a->limit() - std::min(mine, a->limit()))
-      throw Error(over_limit(bytes, what, a->limit(), mine, a->name()));
-  }
+  const std::uint64_t held = memory_in_use();
+  if (!fits(bytes, held, memory_limit())) refuse_process(bytes, what, held);
+  if (const MemoryAccount* a = t_account; a && !fits(bytes, a->in_use(), a->limit()))
+    refuse_account(bytes, what, *a, a->in_use());
 }
 
 AccountScope::AccountScope(MemoryAccount& account) : previous_(std::exchange(t_account, &account)) {}
 AccountScope::~AccountScope() { t_account = previous_; }
 
-// Check and add in one step per account (compare-exchange), so two threads
-// charging at once cannot both pass a check that only one of them fits.
 MemoryCharge::MemoryCharge(std::uint64_t bytes, const std::string& what) {
   if (bytes == 0) return;
-  const std::uint64_t limit = memory_limit();
-  std::uint64_t held = g_in_use.load(std::memory_order_relaxed);
-  do {
-    if (bytes > limit || bytes > limit - std::min(held, limit))
-      throw Error(over_limit(bytes, what, limit, held, "the memory limit") +
-                  "; raise it with --max-memory (e.g. --max-memory 64G)");
-  } while (!g_in_use.compare_exchange_weak(held, held + bytes, std::memory_order_relaxed));
+  std::uint64_t held;
+  if (!add_if_fits(g_in_use, bytes, memory_limit(), held)) refuse_process(bytes, what, held);
   if (MemoryAccount* a = t_account) {
-    std::uint64_t mine = a->used_.load(std::memory_order_relaxed);
-    do {
-      if (bytes > a->limit() || bytes > a->limit() - std::min(mine, a->limit())) {
-        g_in_use.fetch_sub(bytes, std::memory_order_relaxed);
-        throw Error(over_limit(bytes, what, a->limit(), mine, a->name()));
-      }
-    } while (!a->used_.compare_exchange_weak(mine, mine + bytes, std::memory_order_relaxed));
+    if (!add_if_fits(a->used_, bytes, a->limit(), held)) {
+      g_in_use.fetch_sub(bytes, std::memory_order_relaxed);
+      refuse_account(bytes, what, *a, held);
+    }
     account_ = a;
   }
   bytes_ = bytes;
 }
 
-MemoryCharge::MemoryCharge(std::uint64_t count, std::uint64_t size, const std::string& what) {
-  std::uint64_t bytes;
-  if (__builtin_mul_overflow(count, size, &bytes))
-    throw Error(what + " would need more than 2^64 bytes (" + std::to_string(count) + " x " +
-                std::to_string(size) + ")");
-  MemoryCharge(bytes, what).swap(*this);
-}
+MemoryCharge::MemoryCharge(std::uint64_t count, std::uint64_t size, const std::string& what)
+    : MemoryCharge(product(count, size, what), what) {}
 
 MemoryCharge::~MemoryCharge() {
   if (!bytes_) return;
@@ -108,11 +120,7 @@ MemoryCharge::~MemoryCharge() {
 }
 
 void check_allocation(std::uint64_t count, std::uint64_t size, const std::string& what) {
-  std::uint64_t bytes;
-  if (__builtin_mul_overflow(count, size, &bytes))
-    throw Error(what + " would need more than 2^64 bytes (" + std::to_string(count) + " x " +
-                std::to_string(size) + ")");
-  check_allocation(bytes, what);
+  check_allocation(product(count, size, what), what);
 }
 
 std::optional<std::uint64_t> parse_byte_size(const std::string& text) {

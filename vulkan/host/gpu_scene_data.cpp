@@ -39,10 +39,18 @@ void check_shader_addressable(std::uint64_t voxels) {
                 std::to_string(kMost) + "); use --backend cpu");
 }
 
+namespace {
+
+// The samples' bytes in whole words, once the shaders can address them all.
+std::size_t addressable_word_bytes(const GridVolume& volume) {
+  check_shader_addressable(volume.size());
+  return word_bytes(volume.bytes());
+}
+
+}  // namespace
+
 GpuVolume::GpuVolume(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume)
-    : samples((check_shader_addressable(volume.size()), std::move(device)), word_bytes(volume.bytes()),
-              "the volume's samples"),
-      type(type_code(volume)) {
+    : samples(std::move(device), addressable_word_bytes(volume), "the volume's samples"), type(type_code(volume)) {
   volume.visit([&](auto v) { samples.upload(std::as_bytes(v)); });
 }
 

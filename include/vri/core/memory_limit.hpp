@@ -4,7 +4,7 @@
 // by a file or asked for on the command line fails with a clear message
 // instead of exhausting the machine. Default: 75% of physical memory;
 // `--max-memory`. It is one account for the whole process: what is held by a
-// MemoryCharge (every table and image, the volumes and meshes) counts against
+// MemoryCharge (tables, images, meshes, the GPU's rays) counts against
 // every later check, so two structures that each fit cannot together pass it.
 // An AccountScope adds a second, smaller account on one thread (the viewer's
 // per-client budget, docs/RELIABILITY.md).
