@@ -11,6 +11,7 @@
 #include "icet_compositor.hpp"
 #include "kd_bricks.hpp"
 #include "vri/core/error.hpp"
+#include "vri/methods.hpp"
 #include "vri/render/scene_renderer.hpp"
 
 namespace vri::distributed {
@@ -28,8 +29,9 @@ void check_method(const Scene& scene) {
   const std::string& m = scene.method.name;
   if (!std::holds_alternative<GridVolume>(scene.volume))
     throw Error("distributed rendering takes grid scenes; tetrahedral meshes are not split yet (docs/DISTRIBUTED.md)");
-  if (m != "exact" && m != "riemann" && m != "preint1" && m != "preint2" && m != "preint2-dual" && m != "adaptive")
-    throw Error("method '" + m + "' is not distributed: use exact, riemann, preint1, preint2, preint2-dual or adaptive");
+  if (!known_method(m).distributed)
+    throw Error("method '" + m + "' is not distributed: use " +
+                method_names([](const MethodInfo& i) { return i.distributed; }, "or"));
   if (scene.method.fast.termination != 0)
     throw Error("early ray termination is per process in distributed rendering and would change the image: "
                 "set termination 0");

@@ -13,40 +13,14 @@ seconds=${1:-10}
 dir=${2:-build-fuzz}
 CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRI_FUZZ=ON -DVRI_BUILD_TESTS=OFF \
   -DVRI_BUILD_BENCH=OFF >/dev/null
-cmake --build "$dir" -j "$(nproc)" --target fuzz_raw fuzz_nrrd fuzz_nrrd_gzip fuzz_volvis_dat fuzz_vtk_legacy \
-  fuzz_vtu fuzz_vti fuzz_vtk_structured_points fuzz_metaimage fuzz_npy_volume fuzz_tiff fuzz_scene fuzz_transfer_function \
-  fuzz_viewer_protocol
-mkdir -p "$dir/fuzz-artifacts"
-# Seeds: small generated files (fuzz/seeds/) and the bundled small inputs.
-declare -A extra=(
-  [raw]="" [nrrd]="" [nrrd_gzip]="" [volvis_dat]="" [metaimage]="" [npy_volume]="" [tiff]=""
-  [vtk_legacy]="tests/data/mesh" [vtu]="tests/data/mesh"
-  [vti]="tests/data/volume" [vtk_structured_points]="tests/data/volume"
-  [scene]="scenes" [transfer_function]="presets" [viewer_protocol]=""
-)
-# One harness: its corpus grows in BUILD_DIR/fuzz-corpus/HARNESS; its log
-# ends with libFuzzer's stats and the CPU seconds it used.
-fuzz_one() {
-  local h=$1 corpus="$dir/fuzz-corpus/$1" log="$dir/fuzz-artifacts/$1.log" seeds=()
-  mkdir -p "$corpus"
-  [ -d "fuzz/seeds/$h" ] && seeds+=("fuzz/seeds/$h")
-  [ -d "tests/data/fuzz/$h" ] && seeds+=("tests/data/fuzz/$h")
-  [ -n "${extra[$h]}" ] && seeds+=("${extra[$h]}")
-  local TIMEFORMAT="cpu_seconds: %U user %S sys" rc=0
-  { time "$dir/fuzz/fuzz_$h" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-      -max_len=65536 -print_final_stats=1 -artifact_prefix="$dir/fuzz-artifacts/$h-" >"$log" 2>&1 || rc=$?; } 2>>"$log"
-  echo "== fuzz_$h: ${seconds}s: $(grep -E 'stat::number_of_executed_units' "$log" | tr -s ' ') $(grep cpu_seconds "$log")"
-  if [ $rc -ne 0 ]; then echo "fuzz_$h FAILED: see $log"; grep -A30 -E "ERROR|deadly|Timeout|out-of-memory" "$log" | head -40; fi
-  return $rc
-}
-harnesses=(raw nrrd nrrd_gzip volvis_dat vtk_legacy vtu vti vtk_structured_points metaimage npy_volume tiff scene
-           transfer_function viewer_protocol)
+cmake --build "$dir" -j "$(nproc)"  # the fuzz build holds the harnesses only
+# Each harness is the ctest fuzz_HARNESS (label fuzz, fuzz/run_harness.sh).
 jobs=${FUZZ_JOBS:-$(nproc)}
-[ "${FUZZ_PARALLEL:-0}" = 1 ] && jobs=${#harnesses[@]}  # every harness at once (the long campaign)
-status=0 running=0
-for h in "${harnesses[@]}"; do
-  fuzz_one "$h" &
-  if (( ++running >= jobs )); then wait -n || status=1; running=$((running - 1)); fi
+[ "${FUZZ_PARALLEL:-0}" = 1 ] && jobs=14  # every harness at once (the long campaign)
+status=0
+FUZZ_SECONDS=$seconds ctest --test-dir "$dir" -L fuzz -j "$jobs" --timeout $((seconds + 120)) --output-on-failure \
+  || status=1
+for log in "$dir"/fuzz-artifacts/*.log; do
+  echo "== $(basename "$log" .log): ${seconds}s: $(grep -E 'stat::number_of_executed_units' "$log" | tr -s ' ') $(grep cpu_seconds "$log")"
 done
-while (( running > 0 )); do wait -n || status=1; running=$((running - 1)); done
 exit $status

@@ -1,10 +1,13 @@
 // The Python module `vri`: volume rendering with measurable accuracy, on numpy.
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 #include "bindings.hpp"
 #include "vri/render/backend.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
+#include "vri/methods.hpp"
 
 namespace vri::python {
 
@@ -24,12 +27,13 @@ void bind_errors(py::module_&) {
 }  // namespace vri::python
 
 PYBIND11_MODULE(vri, m) {
-  m.doc() =
+  static const std::string doc =
       "vri: volume rendering with measurable accuracy.\n\n"
       "Render regular-grid volumes and tetrahedral meshes with the integration methods of\n"
-      "SPEC §9 (riemann, preint1, preint2, preint2-dual, adaptive, exact, pt, pt-cylindrical,\n"
-      "tet-raycast) and compare them against the exact integral. Images are float32 numpy\n"
-      "arrays (H, W, 4), premultiplied RGBA, the same bytes as `vri render -o X.npy`.";
+      "SPEC §9 (" + vri::method_names() + ") and compare them against the exact integral.\n"
+      "Images are float32 numpy arrays (H, W, 4), premultiplied RGBA, the same bytes as\n"
+      "`vri render -o X.npy`.";
+  m.doc() = doc.c_str();
   m.attr("__version__") = VRI_VERSION;
   // Whether this build has the GPU backend (backend="vulkan"; docs/GPU.md).
   m.attr("has_vulkan") = vri::vulkan_backend_built();

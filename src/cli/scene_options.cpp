@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "vri/core/error.hpp"
+#include "vri/methods.hpp"
 
 namespace vri::cli {
 
@@ -20,7 +21,7 @@ void SceneFlags::add_to(CLI::App* cmd) {
   SceneOverrides& o = overrides;
   cmd->add_option("--background", background,
                   "PNG: 'none' keeps alpha (straight colour, no background); or R,G,B in [0, 1] over the scene's");
-  cmd->add_option("--method", o.method, "Integration method (overrides the scene)");
+  cmd->add_option("--method", o.method, "Integration method (overrides the scene): " + method_names(nullptr, "or"));
   cmd->add_option("--step", o.step, "Step size in voxel units");
   cmd->add_option("--tolerance", o.tolerance, "Error tolerance (exact, adaptive)");
   cmd->add_option("--table-size", o.table_size, "Pre-integration table size");

@@ -113,6 +113,21 @@ MemoryCharge::MemoryCharge(std::uint64_t bytes, const std::string& what) {
 MemoryCharge::MemoryCharge(std::uint64_t count, std::uint64_t size, const std::string& what)
     : MemoryCharge(product(count, size, what), what) {}
 
+void charge_process_bytes(std::uint64_t bytes, const std::string& what) {
+  std::uint64_t held;
+  if (!add_if_fits(g_in_use, bytes, memory_limit(), held)) refuse_process(bytes, what, held);
+}
+
+void release_process_bytes(std::uint64_t bytes) noexcept { g_in_use.fetch_sub(bytes, std::memory_order_relaxed); }
+
+MemoryCharge MemoryCharge::process_only(std::uint64_t bytes, const std::string& what) {
+  struct Outside {  // the thread's account, put back however the charge ends
+    MemoryAccount* saved = std::exchange(t_account, nullptr);
+    ~Outside() { t_account = saved; }
+  } outside;
+  return MemoryCharge(bytes, what);
+}
+
 MemoryCharge::~MemoryCharge() {
   if (!bytes_) return;
   g_in_use.fetch_sub(bytes_, std::memory_order_relaxed);

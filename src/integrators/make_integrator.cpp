@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
 
 #include "vri/core/error.hpp"
 #include "vri/integrators/adaptive_guaranteed.hpp"
@@ -15,44 +16,37 @@
 #include "vri/tables/table_builder.hpp"
 #include "vri/tables/weighted_tables.hpp"
 #include "vri/integrators/riemann.hpp"
+#include "vri/methods.hpp"
 
 namespace vri {
 
-namespace {
-
-bool is_known(const std::string& name) {
-  const auto& known = known_method_names();
-  return std::find(known.begin(), known.end(), name) != known.end();
+void check_volume_kind(const MethodSpec& spec, bool mesh) {
+  const MethodInfo& m = known_method(spec.name);
+  if (!mesh && !m.grid)
+    throw Error("method '" + spec.name + "' needs a tetrahedral mesh (volume {\"file\": \"x.vtk\"} or " +
+                "{\"builtin\": \"tetrahedralized\", ...})");
+  if (mesh && !m.mesh)
+    throw Error("method '" + spec.name + "' works on regular grids only; for a tetrahedral mesh use " +
+                method_names([](const MethodInfo& i) { return i.mesh; }, "or"));
 }
-
-bool is_mesh_method(const std::string& name) {
-  return name == "pt" || name == "pt-cylindrical" || name == "tet-raycast";
-}
-
-[[noreturn]] void refuse(const std::string& name, const std::string& kind) {
-  if (is_known(name)) throw Error("method '" + name + "' is not implemented yet for " + kind);
-  std::string list;
-  for (const auto& n : known_method_names()) list += (list.empty() ? "" : ", ") + n;
-  throw Error("unknown method '" + name + "' (known: " + list + ")");
-}
-
-}  // namespace
 
 void check_jitter(const MethodSpec& spec) {
-  if (spec.jitter && spec.name != "riemann")
-    throw Error(spec.name + ": jitter applies to riemann only (the pre-integrated methods integrate between their "
+  if (spec.jitter && !known_method(spec.name).jitter)
+    throw Error(spec.name + ": jitter applies to " + method_names([](const MethodInfo& m) { return m.jitter; }) +
+                " only (the pre-integrated methods integrate between their "
                 "samples, so their rings are faint; exact and adaptive place no fixed samples)");
 }
 
-const std::vector<std::string>& known_method_names() {
-  static const std::vector<std::string> names = {
-      "riemann", "preint1", "preint2", "preint2-dual", "adaptive",
-      "exact",   "pt",      "pt-cylindrical", "tet-raycast"};
-  return names;
+void check_termination(const MethodSpec& spec) {
+  if (spec.fast.termination != 0 && !known_method(spec.name).termination)
+    throw Error(spec.name + ": early ray termination is not supported yet; it works in " +
+                method_names([](const MethodInfo& m) { return m.termination; }));
 }
 
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
                                             const TransferFunction& tf, const Lighting& lighting) {
+  check_volume_kind(spec, false);
+  check_termination(spec);
   if (spec.name == "riemann")
     return std::make_unique<RiemannIntegrator>(volume, tf, spec.step, lighting, spec.fast, spec.jitter);
   check_jitter(spec);
@@ -67,9 +61,6 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
     return std::make_unique<Preint2DualIntegrator>(volume, tf, size, spec.iterations,
                                                    second_order_builder_name(spec.builder), lighting, spec.fast);
   }
-  if (spec.fast.termination != 0)
-    throw Error(spec.name + ": early ray termination is not supported yet; it works in riemann, preint1, preint2 "
-                "and preint2-dual");
   if (spec.name == "adaptive") {
     const AdaptiveParams p{spec.tolerance, spec.h0, spec.hmin, spec.hmax,
                            parse_adaptive_strategy(spec.strategy)};
@@ -78,14 +69,14 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
     return std::make_unique<AdaptiveSimpsonIntegrator>(volume, tf, p, lighting, spec.fast);
   }
   if (spec.name == "exact") return std::make_unique<ExactIntegrator>(volume, tf, spec.tolerance, lighting);
-  if (is_mesh_method(spec.name))
-    throw Error("method '" + spec.name + "' needs a tetrahedral mesh (volume {\"file\": \"x.vtk\"} or " +
-                "{\"builtin\": \"tetrahedralized\", ...})");
-  refuse(spec.name, "regular grids");
+  throw Error("method '" + spec.name + "' is in the method registry but make_integrator does not construct it");
 }
 
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
                                             const TransferFunction& tf, const Lighting& lighting) {
+  check_volume_kind(spec, true);
+  if (!known_method(spec.name).per_ray)
+    throw Error("method '" + spec.name + "' projects whole tetrahedra; it has no per-ray integrator");
   check_jitter(spec);
   if (spec.fast.termination != 0)
     throw Error(spec.name + ": early ray termination is not supported on tetrahedral meshes yet");
@@ -93,11 +84,7 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMes
   if (spec.name == "tet-raycast")
     return std::make_unique<TetRaycastIntegrator>(mesh, make_slab_table(spec, mesh, tf), lighting,
                                                   make_weighted_length_tables(spec, mesh, tf, lighting));
-  if (spec.name == "pt" || spec.name == "pt-cylindrical")
-    throw Error("method '" + spec.name + "' projects whole tetrahedra; it has no per-ray integrator");
-  if (!is_mesh_method(spec.name) && is_known(spec.name))
-    throw Error("method '" + spec.name + "' works on regular grids only; for a tetrahedral mesh use exact or tet-raycast");
-  refuse(spec.name, "tetrahedral meshes");
+  throw Error("method '" + spec.name + "' is in the method registry but make_integrator does not construct it");
 }
 
 namespace {

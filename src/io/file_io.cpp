@@ -24,7 +24,7 @@ void require_regular_file(const fs::path& path) {
     throw FileError("cannot read '" + path.string() + "': not a regular file (a FIFO, device or socket)");
 }
 
-std::vector<std::byte> read_file(const fs::path& path) {
+ChargedVector<std::byte> read_file(const fs::path& path) {
   require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in)
@@ -33,7 +33,8 @@ std::vector<std::byte> read_file(const fs::path& path) {
   const std::streamoff size = in.tellg();
   if (size < 0) throw FileError("cannot read '" + path.string() + "'");
   in.seekg(0);
-  std::vector<std::byte> bytes(static_cast<std::size_t>(size));
+  check_allocation(std::uint64_t(size), "the file '" + path.string() + "'");
+  ChargedVector<std::byte> bytes(static_cast<std::size_t>(size));
   if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), size))
     throw FileError("cannot read '" + path.string() + "'");
   return bytes;

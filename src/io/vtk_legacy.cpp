@@ -26,8 +26,8 @@ TetMesh parse(Cursor& in, const std::string& wanted) {
     throw Error("dataset is " + header.dataset + "; only UNSTRUCTURED_GRID meshes are supported");
   const bool offsets_form = header.version >= 5;  // 5.x: OFFSETS/CONNECTIVITY
 
-  std::optional<std::vector<double>> xyz;
-  std::vector<std::int64_t> connectivity, offsets, types;
+  std::optional<ChargedVector<double>> xyz;
+  ChargedVector<std::int64_t> connectivity, offsets, types;
   bool have_cells = false, have_types = false;
   Attributes attributes;
   std::size_t n_points = 0;

@@ -39,7 +39,7 @@ void Cursor::skip_metadata() {
   }
 }
 
-std::vector<double> Cursor::values(Num type, std::size_t count) {
+ChargedVector<double> Cursor::values(Num type, std::size_t count) {
   if (binary) {
     auto out = decode(rest(), type, count, /*big_endian=*/true);
     pos_ += count * num_size(type);
@@ -47,7 +47,7 @@ std::vector<double> Cursor::values(Num type, std::size_t count) {
   }
   check_ascii_count(count, bytes_.size() - pos_);
   check_allocation(count, sizeof(double), "an array of " + std::to_string(count) + " values");
-  std::vector<double> out(count);
+  ChargedVector<double> out(count);
   pos_ += parse_ascii(Num::Float64, rest_text(), std::as_writable_bytes(std::span(out)));
   return out;
 }
@@ -187,7 +187,7 @@ const ArrayRef& Attributes::choose(const std::string& wanted, std::size_t n_poin
   return a;
 }
 
-std::vector<double> Attributes::values(Cursor& in, const ArrayRef& a) const {
+ChargedVector<double> Attributes::values(Cursor& in, const ArrayRef& a) const {
   in.seek(a.at);
   if (!a.color || in.binary) return in.values(a.type, a.tuples);
   auto v = in.values(Num::Float64, a.tuples);

@@ -31,7 +31,7 @@ class Cursor {
   // Skips a METADATA block's lines, up to and with the empty line that ends it.
   void skip_metadata();
   // `count` values of `type` (binary: big-endian) as doubles.
-  std::vector<double> values(Num type, std::size_t count);
+  ChargedVector<double> values(Num type, std::size_t count);
   // The same values skipped: checked (present, numbers), nothing allocated.
   void skip(Num type, std::size_t count);
 
@@ -84,7 +84,7 @@ class Attributes {
   // one-component one); vri::Error unless it holds `n_points` values.
   const ArrayRef& choose(const std::string& wanted, std::size_t n_points) const;
   // Its values as doubles (COLOR_SCALARS as unsigned chars 0..255).
-  std::vector<double> values(Cursor& in, const ArrayRef& array) const;
+  ChargedVector<double> values(Cursor& in, const ArrayRef& array) const;
 
  private:
   enum class Section { None, Point, Cell } section_ = Section::None;

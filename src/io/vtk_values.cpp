@@ -62,14 +62,14 @@ double load(const std::byte* p, bool swap) {
 
 }  // namespace
 
-std::vector<double> decode(std::span<const std::byte> bytes, Num type, std::size_t count, bool big_endian) {
+ChargedVector<double> decode(std::span<const std::byte> bytes, Num type, std::size_t count, bool big_endian) {
   const std::size_t size = num_size(type);
   if (bytes.size() / size < count)
     throw Error("binary data ends early: " + std::to_string(count) + " values need " +
                 std::to_string(count * size) + " bytes, " + std::to_string(bytes.size()) + " left");
   const bool swap = big_endian != (std::endian::native == std::endian::big);
   check_allocation(count, sizeof(double), "an array of " + std::to_string(count) + " values");
-  std::vector<double> out(count);
+  ChargedVector<double> out(count);
   const std::byte* p = bytes.data();
   for (std::size_t i = 0; i < count; ++i, p += size) {
     switch (type) {
@@ -149,8 +149,8 @@ std::size_t parse_ascii(Num type, std::string_view text, std::span<std::byte> ou
   return std::size_t(p - begin);
 }
 
-std::vector<std::int64_t> to_indices(const std::vector<double>& values, const std::string& what) {
-  std::vector<std::int64_t> out(values.size());
+ChargedVector<std::int64_t> to_indices(std::span<const double> values, const std::string& what) {
+  ChargedVector<std::int64_t> out(values.size());
   for (std::size_t i = 0; i < values.size(); ++i) {
     const double v = values[i];
     if (!(v >= 0 && v < 9.0e15) || v != std::floor(v))
@@ -160,9 +160,9 @@ std::vector<std::int64_t> to_indices(const std::vector<double>& values, const st
   return out;
 }
 
-std::vector<TetMesh::Tet> tets_from_cells(const std::vector<std::int64_t>& connectivity,
-                                          const std::vector<std::int64_t>& offsets,
-                                          const std::vector<std::int64_t>& types) {
+std::vector<TetMesh::Tet> tets_from_cells(std::span<const std::int64_t> connectivity,
+                                          std::span<const std::int64_t> offsets,
+                                          std::span<const std::int64_t> types) {
   if (offsets.size() != types.size() + 1) throw Error("cell offsets and cell types disagree in count");
   std::vector<TetMesh::Tet> tets(types.size());
   for (std::size_t c = 0; c < types.size(); ++c) {
@@ -181,7 +181,7 @@ std::vector<TetMesh::Tet> tets_from_cells(const std::vector<std::int64_t>& conne
   return tets;
 }
 
-std::vector<Vec3> points_from(const std::vector<double>& xyz) {
+std::vector<Vec3> points_from(std::span<const double> xyz) {
   std::vector<Vec3> points(xyz.size() / 3);
   for (std::size_t i = 0; i < points.size(); ++i) points[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
   return points;

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "vri/core/charged_vector.hpp"
 #include "vri/mesh/tet_mesh.hpp"
 
 namespace vri::vtk {
@@ -25,7 +26,7 @@ std::size_t num_size(Num type);
 std::string num_name(Num type);
 
 // Decodes `count` packed values (little or big endian) to double.
-std::vector<double> decode(std::span<const std::byte> bytes, Num type, std::size_t count, bool big_endian);
+ChargedVector<double> decode(std::span<const std::byte> bytes, Num type, std::size_t count, bool big_endian);
 
 // Refuses `count` ASCII values in `bytes_left` bytes of text before anything is
 // allocated: each value takes at least two bytes (a digit and a separator).
@@ -38,17 +39,17 @@ std::size_t parse_ascii(Num type, std::string_view text, std::span<std::byte> ou
 
 // Converts values used as indices, refusing negative and fractional ones.
 // `what` names the array in the error message.
-std::vector<std::int64_t> to_indices(const std::vector<double>& values, const std::string& what);
+ChargedVector<std::int64_t> to_indices(std::span<const double> values, const std::string& what);
 
 // The tetrahedra of an unstructured grid given as cell i = connectivity[offsets[i] ..
 // offsets[i+1]) with VTK cell type types[i]. Any cell other than VTK_TETRA (10)
 // with 4 points is refused, naming the cell and its type.
-std::vector<TetMesh::Tet> tets_from_cells(const std::vector<std::int64_t>& connectivity,
-                                          const std::vector<std::int64_t>& offsets,
-                                          const std::vector<std::int64_t>& types);
+std::vector<TetMesh::Tet> tets_from_cells(std::span<const std::int64_t> connectivity,
+                                          std::span<const std::int64_t> offsets,
+                                          std::span<const std::int64_t> types);
 
 // Points given as 3 doubles each.
-std::vector<Vec3> points_from(const std::vector<double>& xyz);
+std::vector<Vec3> points_from(std::span<const double> xyz);
 
 // A point-data array as the readers list it.
 struct NamedArray {

@@ -72,7 +72,7 @@ namespace {
 // (inline data, whose text ends at the next tag): any other character than
 // base64 and space is an error; else (appended data, followed by the closing
 // tag) decoding stops there.
-std::vector<std::byte> base64(std::string_view text, bool strict) {
+ChargedVector<std::byte> base64(std::string_view text, bool strict) {
   auto value = [](char c) -> int {
     if (c >= 'A' && c <= 'Z') return c - 'A';
     if (c >= 'a' && c <= 'z') return c - 'a' + 26;
@@ -82,7 +82,7 @@ std::vector<std::byte> base64(std::string_view text, bool strict) {
     if (c == '=') return 64;
     return -1;
   };
-  std::vector<std::byte> out;
+  ChargedVector<std::byte> out;
   int group[4], n = 0;
   for (char c : text) {
     if (std::isspace(static_cast<unsigned char>(c))) continue;
@@ -264,20 +264,20 @@ Document read_document(std::string_view text, const std::string& type) {
   return doc;
 }
 
-std::vector<double> values(const Document& doc, const Array& a, std::size_t count) {
+ChargedVector<double> values(const Document& doc, const Array& a, std::size_t count) {
   return for_array(a, [&] {
     if (a.format == "ascii") {
       const std::string_view text = doc.text.substr(a.content_begin, a.content_end - a.content_begin);
       check_ascii_count(count, text.size());
       check_allocation(count, sizeof(double), "an array of " + std::to_string(count) + " values");
-      std::vector<double> out(count);
+      ChargedVector<double> out(count);
       parse_ascii(Num::Float64, text, std::as_writable_bytes(std::span(out)));
       return out;
     }
     const std::uint64_t bytes = checked_product({count, num_size(a.type)}, "the declared array size");
     const Payload payload(doc, a, bytes);
     check_allocation(bytes, "a decompressed array");
-    std::vector<std::byte> packed(bytes);
+    ChargedVector<std::byte> packed(bytes);
     payload.copy_to(packed);
     return decode(packed, a.type, count, doc.format.big_endian);
   });

@@ -89,14 +89,14 @@ class Payload {
     std::uint64_t at, csize, usize;
   };
   Format format_;
-  std::vector<std::byte> decoded_;  // base64 decoded
+  ChargedVector<std::byte> decoded_;  // base64 decoded
   std::span<const std::byte> stream_;
   std::vector<Block> blocks_;  // compressed blocks; empty: stored at data_at_
   std::uint64_t data_at_ = 0, bytes_ = 0;
 };
 
 // `count` values of an array as doubles (ASCII, binary or appended).
-std::vector<double> values(const Document& doc, const Array& array, std::size_t count);
+ChargedVector<double> values(const Document& doc, const Array& array, std::size_t count);
 
 // Runs f(); a vri::Error it throws is rethrown prefixed with "DataArray 'name': ".
 template <class F>

@@ -35,7 +35,7 @@ TetMesh parse(std::string_view text, const std::string& wanted) {
   if (!conn || !offs || !types) throw Error("Cells needs connectivity, offsets and types arrays");
   const auto xyz = vtk::xml::values(doc, *pts, checked_product({3, n_points}, "NumberOfPoints"));
   auto ends = vtk::to_indices(vtk::xml::values(doc, *offs, n_cells), "offsets");
-  std::vector<std::int64_t> starts(1, 0);
+  ChargedVector<std::int64_t> starts(1, 0);
   starts.insert(starts.end(), ends.begin(), ends.end());  // VTK stores where each cell ends
   const std::size_t n_conn = ends.empty() ? 0 : static_cast<std::size_t>(ends.back());
   const auto connectivity = vtk::to_indices(vtk::xml::values(doc, *conn, n_conn), "connectivity");

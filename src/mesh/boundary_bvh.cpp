@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace vri {
 
@@ -15,6 +16,13 @@ Vec3 centroid_of(const Vec3& a, const Vec3& e1, const Vec3& e2) { return a + (e1
 }  // namespace
 
 BoundaryBvh::BoundaryBvh(const TetMesh& mesh) {
+  std::uint64_t boundary = 0;
+  for (std::size_t t = 0; t < mesh.size(); ++t)
+    for (int f = 0; f < 4; ++f) boundary += mesh.neighbor(t, f) < 0;
+  const std::uint64_t node_count = 2 * boundary / kLeafSize + 2;
+  charge_ = MemoryCharge(boundary * sizeof(Face) + node_count * sizeof(Node),
+                         "the search tree of " + std::to_string(boundary) + " boundary faces");
+  faces_.reserve(boundary);
   const auto& p = mesh.points();
   for (std::size_t t = 0; t < mesh.size(); ++t)
     for (int f = 0; f < 4; ++f)
@@ -23,7 +31,7 @@ BoundaryBvh::BoundaryBvh(const TetMesh& mesh) {
         faces_.push_back({p[v[0]], p[v[1]] - p[v[0]], p[v[2]] - p[v[0]], static_cast<std::int32_t>(4 * t + f)});
       }
   if (faces_.empty()) return;
-  nodes_.reserve(2 * faces_.size() / kLeafSize + 2);
+  nodes_.reserve(node_count);
   nodes_.push_back({});
   build(0, 0, static_cast<std::int32_t>(faces_.size()));
 }

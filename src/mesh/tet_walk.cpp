@@ -1,10 +1,15 @@
 #include "vri/mesh/tet_walk.hpp"
 
 #include <limits>
+#include <string>
 
 namespace vri {
 
-TetWalk::TetWalk(const TetMesh& mesh) : mesh_(mesh), bvh_(mesh) {
+TetWalk::TetWalk(const TetMesh& mesh)
+    : mesh_(mesh),
+      charge_(mesh.size(), 4 * sizeof(Plane) + sizeof(Linear),
+              "the face planes and linear fields of " + std::to_string(mesh.size()) + " tetrahedra"),
+      bvh_(mesh) {
   const auto& p = mesh.points();
   const auto& sc = mesh.scalars();
   planes_.resize(4 * mesh.size());

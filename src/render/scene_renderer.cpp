@@ -5,6 +5,7 @@
 
 #include "vri/core/error.hpp"
 #include "vri/integrators/make_integrator.hpp"
+#include "vri/methods.hpp"
 #include "vri/projected/projected_tetrahedra.hpp"
 #include "vri/render/error_estimate.hpp"
 #include "vri/render/render_checks.hpp"
@@ -34,15 +35,15 @@ SceneRenderer::SceneRenderer(const Scene& scene, Backend backend) : scene_(check
     gpu_ = make_vulkan_scene_renderer(scene);
     return;
   }
-  if (m.name != "pt" && m.name != "pt-cylindrical") {
+  if (known_method(m.name).per_ray) {
     integrator_ = std::visit(
         [&](const auto& volume) { return make_integrator(m, volume, scene.transfer_function, scene.lighting); },
         scene.volume);
     return;
   }
+  check_volume_kind(m, std::holds_alternative<TetMesh>(scene.volume));
   check_jitter(m);
-  if (m.fast.termination != 0)
-    throw Error(m.name + ": early ray termination is not supported yet; it works in riemann, preint1, preint2 and preint2-dual");
+  check_termination(m);
   projected_ = std::make_unique<Projected>();
   Projected& p = *projected_;
   p.table = make_slab_table(m, scene.mesh(), scene.transfer_function);

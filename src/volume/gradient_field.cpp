@@ -6,16 +6,10 @@
 
 namespace vri {
 
-namespace {
-
-std::vector<float> gradient_storage(std::size_t points) {
-  check_allocation(points, 3 * sizeof(float), "the lighting gradient field (3 floats per grid point)");
-  return std::vector<float>(3 * points);
-}
-
-}  // namespace
-
-GradientField::GradientField(const GridVolume& volume) : volume_(volume), g_(gradient_storage(volume.size())) {
+GradientField::GradientField(const GridVolume& volume)
+    : volume_(volume),
+      charge_(volume.size(), 3 * sizeof(float), "the lighting gradient field (3 floats per grid point)"),
+      g_(3 * volume.size()) {
   volume.visit([this](auto v) { fill(v.data()); });
 }
 

@@ -39,11 +39,23 @@ std::uint64_t GridVolume::checked_sample_count(std::array<std::int64_t, 3> dims)
 
 namespace {
 
+// Owned samples, charged to the process's memory budget for as long as any
+// copy of the volume lives (every copy shares them).
+struct ChargedSamples {
+  explicit ChargedSamples(GridVolume::Samples v)
+      : values(std::move(v)),
+        charge(MemoryCharge::process_only(
+            std::visit([](const auto& s) { return std::uint64_t(s.size() * sizeof(s[0])); }, values),
+            "the volume's samples")) {}
+  GridVolume::Samples values;
+  MemoryCharge charge;
+};
+
 // Owned samples moved behind a shared owner, and the view of them.
 std::pair<GridVolume::SampleView, std::shared_ptr<const void>> shared_samples(GridVolume::Samples values) {
-  auto owner = std::make_shared<const GridVolume::Samples>(std::move(values));
+  auto owner = std::make_shared<const ChargedSamples>(std::move(values));
   const GridVolume::SampleView view =
-      std::visit([](const auto& v) -> GridVolume::SampleView { return std::span(v); }, *owner);
+      std::visit([](const auto& v) -> GridVolume::SampleView { return std::span(v); }, owner->values);
   return {view, std::move(owner)};
 }
 

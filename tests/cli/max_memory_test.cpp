@@ -45,5 +45,25 @@ TEST(MaxMemory, RefusesAVolumeOverTheBudgetAndSaysHowToRaiseIt) {
   EXPECT_TRUE(std::filesystem::exists(dir / "a.npy"));
 }
 
+// The budget bounds the whole process: the volume's samples stay counted, so
+// a lit render whose gradient field alone fits but not beside the volume is
+// refused before the gradients are allocated (they were not, before).
+TEST(MaxMemory, TheVolumeStaysCountedAgainstWhatComesAfterIt) {
+  test::TempDir dir;
+  test::write_text(dir / "s.json", R"({"volume": {"builtin": "sphere", "dims": [40, 40, 40]},
+    "transfer_function": {"points": [[-6, 1, 0.5, 0, 0.5], [0, 0, 0, 1, 0]]},
+    "camera": {"eye": [20, 20, 90], "target": [20, 20, 20], "width": 4, "height": 3},
+    "lighting": {"enabled": true}, "method": {"name": "riemann", "step": 1}})");
+  const std::string render = "render " + (dir / "s.json").string() + " -o " + (dir / "a.npy").string();
+  // 250 KiB of samples, then 750 KiB of gradients: each under 900 KiB, not both.
+  Result r = vri_with(render + " --max-memory 900K", dir);
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("the lighting gradient field (3 floats per grid point) would need 750 KiB (768000 bytes), "
+                       "over the memory limit of 900 KiB with 250 KiB already held"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "a.npy"));
+  r = vri_with(render + " --max-memory 2M", dir);
+  EXPECT_EQ(r.code, 0) << r.err;
+}
+
 }  // namespace
 }  // namespace vri

@@ -47,7 +47,7 @@ TEST(MeshCli, RendersEveryMeshMethodAndRefusesMismatches) {
   test::write_text(grid, R"({"volume": {"builtin": "sphere", "dims": [6, 6, 6]},
     "transfer_function": {"points": [[0, 1, 1, 1, 0.1]]}, "camera": {"eye": [2, 2, 20], "target": [2, 2, 2]}})");
   EXPECT_EQ(run("render " + grid.string() + " --method pt -o " + bad.string(), dir, err), 1);
-  EXPECT_NE(err.find("not a tetrahedral mesh"), std::string::npos) << err;
+  EXPECT_NE(err.find("method 'pt' needs a tetrahedral mesh"), std::string::npos) << err;
   EXPECT_EQ(run("render " + grid.string() + " --method tet-raycast -o " + bad.string(), dir, err), 1);
   EXPECT_NE(err.find("needs a tetrahedral mesh"), std::string::npos) << err;
   EXPECT_FALSE(std::filesystem::exists(bad));

@@ -131,7 +131,7 @@ TEST(OutputSafety, PartsAreWrittenInOrder) {
   const std::span<const std::byte> parts[] = {std::as_bytes(std::span(header)), std::as_bytes(std::span(empty)),
                                               std::as_bytes(std::span(body))};
   write_file_atomically(dir / "parts.bin", parts);
-  const std::vector<std::byte> got = read_file(dir / "parts.bin");
+  const auto got = read_file(dir / "parts.bin");
   const std::string all = header + body;
   ASSERT_EQ(got.size(), all.size());
   EXPECT_TRUE(std::equal(got.begin(), got.end(), std::as_bytes(std::span(all)).begin()));

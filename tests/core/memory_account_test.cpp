@@ -2,9 +2,11 @@
 // hold counts against every later check, so structures that each fit cannot
 // together pass the budget; an AccountScope adds a smaller budget on one
 // thread; charges made at once on many threads never pass it together.
+// Volumes' samples and gradient fields are charged like tables.
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -12,6 +14,8 @@
 #include "vri/core/memory_limit.hpp"
 #include "vri/core/zeroed_floats.hpp"
 #include "vri/mesh/tet_mesh.hpp"
+#include "vri/volume/gradient_field.hpp"
+#include "vri/volume/grid_volume.hpp"
 
 namespace vri {
 namespace {
@@ -54,6 +58,42 @@ TEST(MemoryAccount, TablesAndMeshesAreCharged) {
     TetMesh mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 1, 2, 3}}, {0, 1, 2, 3});
     EXPECT_GT(memory_in_use(), before);
   }
+  EXPECT_EQ(memory_in_use(), before);
+}
+
+TEST(MemoryAccount, VolumesAndGradientsAreChargedOnceForAllTheirCopies) {
+  const std::uint64_t before = memory_in_use();
+  {
+    GridVolume volume({64, 64, 32}, std::vector<float>(64 * 64 * 32, 1.0f));
+    EXPECT_EQ(memory_in_use(), before + (512 << 10));
+    const GridVolume copy = volume;  // shares the samples
+    EXPECT_EQ(memory_in_use(), before + (512 << 10));
+    {
+      const GradientField gradients(volume);
+      EXPECT_EQ(memory_in_use(), before + 4 * (512 << 10));
+    }
+    // With the volume held, a gradient field that alone fits the budget does not.
+    Budget budget(before + (7 << 18));  // 1.75 MiB
+    try {
+      const GradientField gradients(volume);
+      FAIL() << "a 512 KiB volume and its 1.5 MiB gradients passed a 1.75 MiB budget";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("the lighting gradient field"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("512 KiB already held"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(memory_in_use(), before);
+  // A volume loaded inside a page's account is the process's (the viewer's
+  // catalog shares it between pages), so it outlives the account safely.
+  std::optional<GridVolume> shared;
+  {
+    MemoryAccount page("one page's memory", 1 << 20);
+    const AccountScope scope(page);
+    shared.emplace(std::array<int, 3>{32, 32, 32}, std::vector<float>(32 * 32 * 32, 1.0f));
+    EXPECT_EQ(page.in_use(), 0u);
+  }
+  EXPECT_EQ(memory_in_use(), before + (128 << 10));
+  shared.reset();
   EXPECT_EQ(memory_in_use(), before);
 }
 

@@ -36,7 +36,7 @@ inline std::string pattern_raw() { return "mhd_npy_nrrd_pattern_uint8.raw"; }
 inline void expect_pattern(const GridVolume& v, const PatternFixture& f, Vec3 spacing = {1, 1, 1},
                            Vec3 origin = {0, 0, 0}) {
   SCOPED_TRACE(f.name);
-  const std::vector<std::byte> p = read_file(volume_fixture(pattern_raw()));
+  const auto p = read_file(volume_fixture(pattern_raw()));
   EXPECT_EQ(v.dims(), (std::array<int, 3>{11, 7, 5}));
   EXPECT_EQ(scalar_type_name(v.type()), scalar_type_name(f.stored));
   ASSERT_EQ(v.size(), p.size());

@@ -260,7 +260,7 @@ TEST(TiffVolume, FoldersOfSlicesMustMatch) {
 }
 
 TEST(TiffVolume, RefusesTruncatedFilesWithOneLineAndNothingOnStderr) {
-  const std::vector<std::byte> whole = read_file(volume_fixture("tiff_u16_lzw.tif"));
+  const auto whole = read_file(volume_fixture("tiff_u16_lzw.tif"));
   test::TempDir dir;
   for (const std::size_t size : {std::size_t{0}, std::size_t{3}, std::size_t{8}, std::size_t{80}, whole.size() / 2,
                                  whole.size() - 40}) {
@@ -273,7 +273,7 @@ TEST(TiffVolume, RefusesTruncatedFilesWithOneLineAndNothingOnStderr) {
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
   }
   // libtiff's own words, after the file's name: a damaged LZW strip.
-  std::vector<std::byte> damaged = whole;
+  std::vector<std::byte> damaged(whole.begin(), whole.end());
   for (std::size_t i = 16; i < 60; ++i) damaged[i] = std::byte{0xff};
   testing::internal::CaptureStderr();
   const std::string m = expect_error([&] { parse_tiff_volume(damaged, "bad.tif"); },

@@ -1,6 +1,6 @@
 // Issue 17, item 6: every bundled scene gives the same bytes with 1, 2 and
-// 64 threads, grid scenes with every grid method family, mesh scenes with
-// exact, tet-raycast and pt. Images and tables are small.
+// 64 threads with every method that renders it (vri/methods.hpp). Images and
+// tables are small.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,9 +8,8 @@
 #include <string>
 
 #include "test_support.hpp"
-#include "vri/integrators/make_integrator.hpp"
-#include "vri/projected/projected_tetrahedra.hpp"
-#include "vri/render/renderer.hpp"
+#include "vri/methods.hpp"
+#include "vri/render/scene_renderer.hpp"
 #include "vri/scene/scene.hpp"
 
 namespace vri {
@@ -40,33 +39,19 @@ TEST(BundledDeterminism, EveryBundledSceneEveryMethodFamily) {
     Scene scene = load_scene(path);
     scene.camera.width = 10;
     scene.camera.height = 7;
-    const Camera camera(scene.camera);
     const bool grid = std::holds_alternative<GridVolume>(scene.volume);
     ++(grid ? grids : meshes);
-    const std::vector<std::string> methods =
-        grid ? std::vector<std::string>{"riemann", "preint1", "preint2", "preint2-dual", "adaptive", "exact"}
-             : std::vector<std::string>{"exact", "tet-raycast", "pt"};
-    for (const std::string& method : methods) {
-      MethodSpec spec = scene.method;
-      spec.name = method;
-      spec.table_size = 16;
-      spec.table_size_given = true;
-      spec.iterations = 4;
-      spec.length_samples = 8;
-      const std::string what = path.filename().string() + " " + method;
-      if (method == "pt") {
-        const auto table = make_slab_table(spec, scene.mesh(), scene.transfer_function);
-        const auto weighted = make_weighted_length_tables(spec, scene.mesh(), scene.transfer_function, scene.lighting);
-        expect_same_with_any_thread_count(
-            [&](const RenderOptions& o) {
-              return render_projected(camera, scene.mesh(), *table, o, scene.lighting, weighted.get());
-            },
-            what);
-        continue;
-      }
-      const auto integrator = std::visit(
-          [&](const auto& v) { return make_integrator(spec, v, scene.transfer_function, scene.lighting); }, scene.volume);
-      expect_same_with_any_thread_count([&](const RenderOptions& o) { return render(camera, *integrator, o); }, what);
+    for (const MethodInfo& method : methods()) {  // every method the registry says renders this kind
+      if (!(grid ? method.grid : method.mesh)) continue;
+      Scene s = scene;
+      s.method.name = std::string(method.name);
+      s.method.table_size = 16;
+      s.method.table_size_given = true;
+      s.method.iterations = 4;
+      s.method.length_samples = 8;
+      const SceneRenderer renderer(s);
+      expect_same_with_any_thread_count([&](const RenderOptions& o) { return renderer.render(o); },
+                                        path.filename().string() + " " + s.method.name);
     }
   }
   EXPECT_GE(grids, 10);

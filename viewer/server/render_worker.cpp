@@ -9,6 +9,7 @@
 #include "transfer_presets.hpp"
 #include "vri/core/error.hpp"
 #include "vri/io/png.hpp"
+#include "vri/methods.hpp"
 #include "vri/version.hpp"
 
 namespace vri::viewer {
@@ -23,9 +24,11 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 
 // The methods that render the dataset's kind of volume (SPEC §9).
 json methods_for(const Dataset& d) {
-  if (std::holds_alternative<GridVolume>(d.volume))
-    return {"preint1", "preint2", "preint2-dual", "riemann", "adaptive", "exact"};
-  return {"tet-raycast", "pt", "pt-cylindrical", "exact"};
+  const bool grid = std::holds_alternative<GridVolume>(d.volume);
+  json names = json::array();
+  for (const MethodInfo& m : methods())
+    if (grid ? m.grid : m.mesh) names.push_back(m.name);
+  return names;
 }
 
 }  // namespace

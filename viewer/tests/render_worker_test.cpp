@@ -91,7 +91,8 @@ TEST_F(WorkerFixture, WelcomesWithTheDatasetAndItsScene) {
   EXPECT_EQ(last["name"], "colormap: rainbow_uniform");
   EXPECT_EQ(last["transfer_function"]["points"].front()[0], 0.0);
   EXPECT_EQ(last["transfer_function"]["points"].back()[0], 255.0);
-  EXPECT_EQ(welcome["methods"][0], "preint1");
+  // The method menu is the registry's grid methods (vri/methods.hpp), in its order.
+  EXPECT_EQ(welcome["methods"], json({"riemann", "preint1", "preint2", "preint2-dual", "adaptive", "exact"}));
 }
 
 TEST_F(WorkerFixture, FinalFramesAreTheBytesOfVriRender) {

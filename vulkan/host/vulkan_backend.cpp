@@ -6,6 +6,7 @@
 
 #include "vri/core/error.hpp"
 #include "vri/integrators/adaptive_params.hpp"
+#include "vri/methods.hpp"
 #include "vri/render/backend.hpp"
 #include "vri/scene/scene.hpp"
 #include "vulkan_adaptive.hpp"
@@ -23,18 +24,19 @@ bool vulkan_backend_built() { return true; }
 
 std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene) {
   const std::string& m = scene.method.name;
-  if (std::holds_alternative<GridVolume>(scene.volume) && m != "riemann" && m != "preint1" && m != "preint2" &&
-      m != "preint2-dual" && m != "adaptive")
-    throw Error("--backend vulkan: method '" + m +
-                "' is not on the GPU yet; riemann, preint1, preint2, preint2-dual and adaptive are (docs/GPU.md)");
+  const MethodInfo& info = known_method(m);
+  const bool grid = std::holds_alternative<GridVolume>(scene.volume);
+  if (grid && !info.gpu_grid)
+    throw Error("--backend vulkan: method '" + m + "' is not on the GPU yet; " +
+                method_names([](const MethodInfo& i) { return i.gpu_grid; }) + " are (docs/GPU.md)");
   if (!scene.method.fast.float_math)
     throw Error("--backend vulkan: the GPU computes in float; --double needs --backend cpu");
-  if (!std::holds_alternative<GridVolume>(scene.volume)) {
-    if (m != "tet-raycast")
-      throw Error("--backend vulkan: method '" + m + "' on tetrahedral meshes is not on the GPU yet; tet-raycast is "
-                  "(docs/GPU.md)");
+  if (!grid) {
+    if (!info.gpu_mesh)
+      throw Error("--backend vulkan: method '" + m + "' on tetrahedral meshes is not on the GPU yet; " +
+                  method_names([](const MethodInfo& i) { return i.gpu_mesh; }) + " is (docs/GPU.md)");
     if (scene.method.fast.termination != 0)  // as make_integrator on the CPU
-      throw Error("tet-raycast: early ray termination is not supported on tetrahedral meshes yet");
+      throw Error(m + ": early ray termination is not supported on tetrahedral meshes yet");
     return std::make_unique<vulkan::VulkanTetRaycast>(vulkan::VulkanDevice::shared(), scene);
   }
   if (m == "riemann") return std::make_unique<vulkan::VulkanRiemann>(vulkan::VulkanDevice::shared(), scene);

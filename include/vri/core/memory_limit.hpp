@@ -4,8 +4,9 @@
 // by a file or asked for on the command line fails with a clear message
 // instead of exhausting the machine. Default: 75% of physical memory;
 // `--max-memory`. It is one account for the whole process: what is held by a
-// MemoryCharge (tables, images, meshes, the GPU's rays) counts against
-// every later check, so two structures that each fit cannot together pass it.
+// MemoryCharge (volume samples, gradient fields, tables, images, meshes, the
+// GPU's rays) counts against every later check, so two structures that each
+// fit cannot together pass it.
 // An AccountScope adds a second, smaller account on one thread (the viewer's
 // per-client budget, docs/RELIABILITY.md).
 #include <atomic>
@@ -72,6 +73,10 @@ class MemoryCharge {
   MemoryCharge() = default;
   MemoryCharge(std::uint64_t bytes, const std::string& what);
   MemoryCharge(std::uint64_t count, std::uint64_t size, const std::string& what);
+  // A charge to the process's budget only, not to the thread's account: for
+  // data that may outlive the scope (a volume the viewer's catalog shares
+  // between pages; an account must outlive its charges).
+  static MemoryCharge process_only(std::uint64_t bytes, const std::string& what);
   // A copy of a structure charges its bytes again.
   MemoryCharge(const MemoryCharge& other) : MemoryCharge(other.bytes_, "a copy") {}
   MemoryCharge& operator=(const MemoryCharge& other) {
@@ -94,6 +99,12 @@ class MemoryCharge {
   std::uint64_t bytes_ = 0;
   MemoryAccount* account_ = nullptr;
 };
+
+// For ChargedAllocator (vri/core/charged_vector.hpp): adds `bytes` to the
+// process's account, throwing as MemoryCharge does when they do not fit; and
+// gives them back.
+void charge_process_bytes(std::uint64_t bytes, const std::string& what);
+void release_process_bytes(std::uint64_t bytes) noexcept;
 
 // Parses "1073741824", "512M", "4G", "1.5G", "64K", "2T" (powers of 1024);
 // nullopt on anything else or zero.

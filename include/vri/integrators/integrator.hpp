@@ -1,6 +1,8 @@
 #pragma once
 // Integrator: one method of evaluating the volume rendering integral (SPEC §4)
-// along one ray. Every method in vri is one class behind this interface; the
+// along one ray. Every per-ray CPU method is a class behind this interface
+// (vri/methods.hpp per_ray); pt and pt-cylindrical project whole tetrahedra
+// (render_projected) and the GPU has its own kernels (render/backend.hpp). The
 // renderer calls integrate() concurrently from several threads, so it is const
 // and keeps no mutable state.
 #include <string_view>

@@ -15,14 +15,18 @@
 
 namespace vri {
 
-// vri::Error if `spec` asks for jitter (MethodSpec::jitter) of a method other than riemann.
+// vri::Error unless the method (vri/methods.hpp) renders regular grids
+// (mesh false) or tetrahedral meshes (mesh true).
+void check_volume_kind(const MethodSpec& spec, bool mesh);
+
+// vri::Error if `spec` asks for jitter (MethodSpec::jitter) of a method without it (vri/methods.hpp).
 void check_jitter(const MethodSpec& spec);
 
-// Every method name of SPEC §9, implemented or not.
-const std::vector<std::string>& known_method_names();
+// vri::Error if `spec` asks for early ray termination of a method without it.
+void check_termination(const MethodSpec& spec);
 
-// Throws vri::Error for an unknown method, one not yet implemented, or bad
-// parameters. The integrator refers to `volume` and `tf`: keep them alive.
+// Throws vri::Error for an unknown method (vri/methods.hpp), one that does
+// not render this kind of volume, or bad parameters. The integrator refers to `volume` and `tf`: keep them alive.
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
                                             const TransferFunction& tf, const Lighting& lighting = {});
 

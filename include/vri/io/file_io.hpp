@@ -7,10 +7,12 @@
 #include <span>
 #include <vector>
 
+#include "vri/core/charged_vector.hpp"
+
 namespace vri {
 
 // Reads the whole file; throws vri::Error naming the path if it cannot.
-std::vector<std::byte> read_file(const std::filesystem::path& path);
+ChargedVector<std::byte> read_file(const std::filesystem::path& path);
 // vri::FileError unless `path` is missing (the open says so) or a regular
 // file: a FIFO would block the open forever, a device never ends (issue 47).
 // Every reader of vri calls it before opening.

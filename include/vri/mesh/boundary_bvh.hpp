@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "vri/core/memory_limit.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/mesh/tet_mesh.hpp"
 
@@ -42,6 +43,7 @@ class BoundaryBvh {
   const std::vector<Node>& nodes() const { return nodes_; }
 
  private:
+  MemoryCharge charge_;  // faces_ and nodes_, held against the process's budget
   std::vector<Face> faces_;
   std::vector<Node> nodes_;
   void build(std::int32_t node, std::int32_t first, std::int32_t count);

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "vri/core/memory_limit.hpp"
 #include "vri/core/ray.hpp"
 #include "vri/mesh/boundary_bvh.hpp"
 #include "vri/mesh/tet_mesh.hpp"
@@ -95,6 +96,7 @@ class TetWalk {
   int face_towards(std::int32_t tet, std::int32_t other) const;
 
   const TetMesh& mesh_;
+  MemoryCharge charge_;        // planes_ and fields_, held against the process's budget
   std::vector<Plane> planes_;  // 4 per tetrahedron
   std::vector<Linear> fields_;
   BoundaryBvh bvh_;

@@ -3,7 +3,9 @@
 // CPU backend is the library itself; the Vulkan backend (vulkan/: GLSL
 // compute shaders, the loader opened at run time) renders the same
 // integrals on any Vulkan device, Mesa's CPU implementation lavapipe
-// included, within 1e-4 per channel of the CPU float path (docs/GPU.md).
+// included: riemann and the preint methods within 1e-4 per channel of the
+// CPU float path, adaptive within its tolerance of `exact` on a stated share of
+// pixels (docs/GPU.md).
 #include <memory>
 #include <string>
 #include <vector>

@@ -7,6 +7,7 @@
 #include <array>
 #include <vector>
 
+#include "vri/core/memory_limit.hpp"
 #include "vri/core/vec3.hpp"
 #include "vri/volume/grid_volume.hpp"
 
@@ -32,6 +33,7 @@ class GradientField {
   void fill(const T* values);  // central differences of the typed samples
 
   const GridVolume& volume_;
+  MemoryCharge charge_;   // g_'s bytes, held against the process's budget
   std::vector<float> g_;  // 3 floats per grid point, x fastest
 };
 

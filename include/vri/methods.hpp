@@ -1,0 +1,39 @@
+#pragma once
+// The methods of SPEC §9 and what each supports: the one list the front
+// doors read (the CLI's help, the scene's checks, the viewer's menu, the
+// Python docstring, the Vulkan and distributed front doors; issue 48).
+// Adding a method is a row in src/methods/method_registry.cpp and its
+// constructors in make_integrator.cpp (and vulkan_backend.cpp for the GPU).
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vri {
+
+struct MethodInfo {
+  std::string_view name;
+  std::string_view paper;  // the paper (or SPEC section) it implements
+  bool grid = false;        // renders regular grids
+  bool mesh = false;        // renders tetrahedral meshes
+  bool per_ray = true;      // an Integrator per ray (pt, pt-cylindrical project whole cells)
+  bool gpu_grid = false;    // --backend vulkan on grids
+  bool gpu_mesh = false;    // --backend vulkan on meshes
+  bool distributed = false; // mpirun ... --distributed (grids, split at brick faces)
+  bool termination = false; // early ray termination (method.termination)
+  bool jitter = false;      // a jittered first sample (method.jitter)
+};
+
+// Every method, in SPEC §9's order.
+const std::vector<MethodInfo>& methods();
+
+// The method of that name, or null.
+const MethodInfo* find_method(std::string_view name);
+
+// The names of the methods `keep` selects, as "a, b and c" (`conjunction`
+// "or": "a, b or c"); all methods when keep is null.
+std::string method_names(bool (*keep)(const MethodInfo&) = nullptr, std::string_view conjunction = "and");
+
+// vri::Error "unknown method 'x' (known: ...)" unless the name is one.
+const MethodInfo& known_method(std::string_view name);
+
+}  // namespace vri

@@ -1,0 +1,71 @@
+#include "vri/methods.hpp"
+
+#include <algorithm>
+
+#include "vri/core/error.hpp"
+
+namespace vri {
+
+const std::vector<MethodInfo>& methods() {
+  // clang-format off
+  static const std::vector<MethodInfo> all = {
+      {.name = "riemann", .paper = "Riemann sum of the emission-absorption integral (SPEC §4; Max 1995)",
+       .grid = true, .gpu_grid = true, .distributed = true, .termination = true, .jitter = true},
+      {.name = "preint1", .paper = "pre-integrated classification (Engel, Kraus & Ertl 2001); tables by Lum, Wilson & "
+                                   "Ma 2004 and Roettger & Ertl 2002",
+       .grid = true, .gpu_grid = true, .distributed = true, .termination = true},
+      {.name = "preint2", .paper = "second-order pre-integration (El Hajjar, Marchesin, Dischler & Mongenet 2008)",
+       .grid = true, .gpu_grid = true, .distributed = true, .termination = true},
+      {.name = "preint2-dual", .paper = "second-order pre-integration on the cell walk (El Hajjar et al. 2008, §4)",
+       .grid = true, .gpu_grid = true, .distributed = true, .termination = true},
+      {.name = "adaptive", .paper = "adaptive Simpson with error control (Campagnolo, Celes & de Figueiredo 2015)",
+       .grid = true, .gpu_grid = true, .distributed = true},
+      {.name = "exact", .paper = "the integral in closed form between control points (SPEC §4), the reference",
+       .grid = true, .mesh = true, .distributed = true},
+      {.name = "pt", .paper = "projected tetrahedra (Shirley & Tuchman 1990) with the (l, s_f, s_b) table "
+                              "(Roettger & Ertl 2002)",
+       .mesh = true, .per_ray = false},
+      {.name = "pt-cylindrical", .paper = "projected tetrahedra on the cylindrical table (Roettger & Ertl 2002, §4)",
+       .mesh = true, .per_ray = false},
+      {.name = "tet-raycast", .paper = "cell-to-cell ray casting (Garrity 1990) with the (l, s_f, s_b) table",
+       .mesh = true, .gpu_mesh = true},
+  };
+  // clang-format on
+  return all;
+}
+
+namespace {
+
+// "a, b, c" - or, with last = " and ", "a, b and c".
+std::string join(bool (*keep)(const MethodInfo&), std::string_view last) {
+  std::vector<std::string_view> names;
+  for (const MethodInfo& m : methods())
+    if (!keep || keep(m)) names.push_back(m.name);
+  std::string list;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) list += i + 1 == names.size() ? last : ", ";
+    list += names[i];
+  }
+  return list;
+}
+
+}  // namespace
+
+const MethodInfo* find_method(std::string_view name) {
+  const auto& all = methods();
+  const auto it = std::find_if(all.begin(), all.end(), [&](const MethodInfo& m) { return m.name == name; });
+  return it == all.end() ? nullptr : &*it;
+}
+
+std::string method_names(bool (*keep)(const MethodInfo&), std::string_view conjunction) {
+  std::string last(" ");  // built in steps: GCC 12 warns (-Wrestrict) on " " + std::string(...) + " "
+  last.append(conjunction).append(" ");
+  return join(keep, last);
+}
+
+const MethodInfo& known_method(std::string_view name) {
+  if (const MethodInfo* m = find_method(name)) return *m;
+  throw Error("unknown method '" + std::string(name) + "' (known: " + join(nullptr, ", ") + ")");
+}
+
+}  // namespace vri

@@ -1,0 +1,86 @@
+// The method registry (vri/methods.hpp) says the truth: every method renders
+// the volumes, and takes the options, it claims, and refuses the others in
+// one line naming it (issue 48: every list of methods reads the registry).
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "methods/method_registry_support.hpp"
+#include "vri/integrators/make_integrator.hpp"
+
+namespace vri {
+namespace {
+
+TEST(MethodRegistry, NamesAreSpecNinesInItsOrderAndOnce) {
+  std::string names;
+  std::set<std::string_view> seen;
+  for (const MethodInfo& m : methods()) {
+    names += std::string(m.name) + " ";
+    EXPECT_TRUE(seen.insert(m.name).second) << m.name;
+    EXPECT_TRUE(m.grid || m.mesh) << m.name;
+    EXPECT_FALSE(m.paper.empty()) << m.name;
+    EXPECT_EQ(find_method(m.name), &m);
+  }
+  EXPECT_EQ(names, "riemann preint1 preint2 preint2-dual adaptive exact pt pt-cylindrical tet-raycast ");
+  EXPECT_EQ(find_method("preint3"), nullptr);
+}
+
+TEST(MethodRegistry, ListsReadAsSentences) {
+  EXPECT_EQ(method_names([](const MethodInfo& m) { return m.mesh && m.per_ray; }, "or"), "exact or tet-raycast");
+  EXPECT_EQ(method_names([](const MethodInfo& m) { return m.jitter; }), "riemann");
+  EXPECT_EQ(method_names([](const MethodInfo& m) { return m.termination; }), "riemann, preint1, preint2 and preint2-dual");
+  try {
+    known_method("preint3");
+    FAIL() << "an unknown method was taken";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "unknown method 'preint3' (known: riemann, preint1, preint2, preint2-dual, adaptive, exact, "
+                           "pt, pt-cylindrical, tet-raycast)");
+  }
+}
+
+class EveryMethod : public ::testing::TestWithParam<std::string> {
+ protected:
+  const MethodInfo& method() const { return known_method(GetParam()); }
+};
+
+TEST_P(EveryMethod, RendersTheVolumesItClaimsAndRefusesTheOthers) {
+  for (const bool grid : {true, false}) {
+    const std::string why = test::refusal(test::small_scene(grid, method()));
+    const bool claimed = grid ? method().grid : method().mesh;
+    if (claimed)
+      EXPECT_EQ(why, "") << (grid ? "grid" : "mesh");
+    else
+      EXPECT_NE(why.find(GetParam()), std::string::npos) << (grid ? "grid: " : "mesh: ") << why;
+  }
+}
+
+TEST_P(EveryMethod, TakesTerminationAndJitterWhereItClaims) {
+  const bool grid = method().grid;
+  Scene scene = test::small_scene(grid, method());
+  scene.method.fast.termination = 0.01;
+  const std::string termination = test::refusal(scene);
+  EXPECT_EQ(termination.empty(), method().termination && grid) << termination;
+  if (!termination.empty()) {
+    EXPECT_NE(termination.find("termination"), std::string::npos) << termination;
+  }
+  scene = test::small_scene(grid, method());
+  scene.method.jitter = 7;
+  const std::string jitter = test::refusal(scene);
+  EXPECT_EQ(jitter.empty(), method().jitter) << jitter;
+  if (!jitter.empty()) {
+    EXPECT_NE(jitter.find("jitter applies to riemann only"), std::string::npos) << jitter;
+  }
+}
+
+std::vector<std::string> all_names() {
+  std::vector<std::string> names;
+  for (const MethodInfo& m : methods()) names.emplace_back(m.name);
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, EveryMethod, ::testing::ValuesIn(all_names()),
+                         [](const auto& info) { return test::scene_test_name(info.param + ".json"); });
+
+}  // namespace
+}  // namespace vri
