@@ -13,9 +13,9 @@ namespace vri::verify {
 
 namespace {
 
-std::string format(const char* fmt, double a, double b = 0) {
+std::string format(const char* fmt, double a, double b = 0, double c = 0) {
   char buf[160];
-  std::snprintf(buf, sizeof buf, fmt, a, b);
+  std::snprintf(buf, sizeof buf, fmt, a, b, c);
   return buf;
 }
 
@@ -174,6 +174,16 @@ std::vector<Violation> check_case(const Case& c, const Checks& which) {
       if (which.table_convergence && previous >= 0 && e > previous + 1e-4)
         run.record("table-convergence", method, format("RMS %.3g at half the step, was %.3g", e, previous));
       previous = e;
+      // Second order against first order at the same step and table size.
+      if (std::string(method) == "preint2" && which.second_order_wins) {
+        MethodSpec first = table_method("preint1", step);
+        first.table_size = scene.method.table_size;
+        if (const auto one = run.render(label + " preint1 same table", first)) {
+          const double e1 = rms(*one, *exact);
+          if (e > e1 + 1e-4)
+            run.record("preint2-vs-preint1", method, format("step %g: RMS %.3g, preint1's %.3g", step, e, e1));
+        }
+      }
     }
   }
   MethodSpec riemann{.name = "riemann", .step = 0.5};

@@ -39,6 +39,7 @@ struct Violation {
 //                coincide (docs/ARCHITECTURE.md)
 struct Checks {
   bool table_convergence = true;
+  bool second_order_wins = true;  // preint2's RMS <= preint1's (+1e-4) at each step
 };
 std::vector<Violation> check_case(const Case& c, const Checks& which = {});
 

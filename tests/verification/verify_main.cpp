@@ -94,7 +94,8 @@ int main(int argc, char** argv) {
   md << "Cases " << first << " .. " << first + std::uint64_t(cases) - 1 << " (" << t.cases << "), " << seconds
      << " s.\n\n| check | cases violating it | families most involved |\n|---|---|---|\n";
   static const char* kChecks[] = {"finite", "alpha-range", "colour-bound", "exact-vs-independent",
-                                  "guaranteed", "threads", "skipping", "table-convergence", "float-vs-double"};
+                                  "guaranteed", "threads", "skipping", "table-convergence", "float-vs-double",
+                                  "preint2-vs-preint1"};
   bool failed = false;
   for (const char* check : kChecks) {
     const long n = t.by_check.count(check) ? t.by_check[check] : 0;
