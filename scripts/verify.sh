@@ -45,6 +45,14 @@ The checks, each a documented bound:
 | float-vs-double | `riemann`, `preint1`, `preint2` (step 0.5) and `preint2-dual`: the float path (packets included) within 1e-4 of the double path, plus what a scalar error of 1e-6 of the data range moves a colour or a step's alpha on the transfer function's steepest segment; not checked where control points coincide |
 | preint2-vs-preint1 | at each step of table-convergence, `preint2`'s RMS against `exact` at most that of `preint1` with the same table size (64) plus 1e-4: second order wins at equal step |
 
+Beside the campaign, `scripts/differential.sh N` runs the same cases through
+every front door - Python, 1 and 2 threads, `--backend vulkan`, `mpirun -np 2|3`
+- each against the CLI's CPU image within its documented bound
+([verification/differential.md](verification/differential.md)); each
+method's convergence order on smooth scenes is asserted by its unit tests
+(riemann 1, `preint1` 2, `preint2` 3: `tests/integrators/riemann_test.cpp`,
+`preint2_test.cpp`).
+
 A check marked "(open)" is a documented bound vri does not meet yet; the
 campaign counts it and the fast tier does not assert it. Today that is
 table-convergence: with features narrower than a table bin, or extinctions

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """differential.py BUILD [--first SEED] [--cases N] [--report FILE.md]
 [--paths python,vulkan,mpi,threads]: the verification generator's cases
 (vri-verify --scenes, docs/VERIFICATION.md) through every front door, each

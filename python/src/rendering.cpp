@@ -71,7 +71,9 @@ RenderRequest request_of(const char* function, const py::kwargs& kwargs) {
     else if (key == "max_work") o.max_work = number();
     else if (key == "jitter") {
       const long long seed = *keyword<long long>(function, key, v);
-      if (seed < 0) throw py::value_error(std::string(function) + "(): jitter is a seed >= 0");
+      if (seed < 0 || seed > (1LL << 53))  // the CLI's --jitter and the scene's method.jitter say the same
+        throw py::value_error(std::string(function) + "(): jitter: expected an integer seed in [0, 2^53], found " +
+                              std::to_string(seed));
       o.jitter = static_cast<std::uint64_t>(seed);
     } else if (key == "threads") r.threads = *integer();
     else throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + key + "'");

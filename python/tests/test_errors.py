@@ -43,6 +43,16 @@ def test_bad_override_has_the_cli_message(root, run_cli, tmp_path):
     assert str(raised.value) == message
 
 
+def test_jitter_is_checked_as_the_cli_checks_it(root, run_cli, tmp_path):
+    scene = root / "scenes" / "neghip.json"
+    message = cli_error(run_cli, "render", scene, "-o", tmp_path / "x.npy", "--method", "riemann", "--jitter", "-1")
+    assert "--jitter: expected an integer seed in [0, 2^53], found '-1'" in message
+    with pytest.raises(ValueError, match=r"render\(\): jitter: expected an integer seed in \[0, 2\^53\], found -1"):
+        vri.render(scene, method="riemann", jitter=-1)
+    with pytest.raises(ValueError, match=r"found 9007199254740993"):
+        vri.render(scene, method="riemann", jitter=2**53 + 1)
+
+
 def test_work_cap_and_threads(root):
     with pytest.raises(ValueError, match="samples per ray"):
         vri.render(root / "scenes" / "neghip.json", method="riemann", step=1e-6)

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include "vri/core/error.hpp"
 #include "vri/methods.hpp"
@@ -38,7 +40,19 @@ void SceneFlags::add_to(CLI::App* cmd) {
   // negative number would wrap to a huge unsigned one (issue 47).
   cmd->add_option("--jitter", o.jitter,
                   "riemann: move each pixel's samples by a seeded random share of a step (against wood-grain rings)")
-      ->check(CLI::Range(0.0, 9007199254740992.0));
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            std::size_t used = 0;
+            long long seed = -1;
+            try {
+              seed = std::stoll(text, &used);
+            } catch (const std::exception&) {
+            }
+            if (used != text.size() || seed < 0 || seed > (1LL << 53))
+              return "expected an integer seed in [0, 2^53], found '" + text + "'";
+            return "";
+          },
+          "SEED"));
   cmd->add_option("--width", o.width, "Image width in pixels");
   cmd->add_option("--height", o.height, "Image height in pixels");
   cmd->add_flag("--fit", fit, "Frame the volume's box (as ParaView's reset camera), then apply the motions");

@@ -78,7 +78,9 @@ TEST(CliRobustness, BackgroundOrthoHeightAndJitterAreCheckedEverywhere) {
   scene = scene_with(dir, replaced(test::kGoodScene, R"("width": 16)", R"("ortho_height": -3, "width": 16)"));
   expect_refused("render " + scene + out, "ortho_height", dir);
   scene = scene_with(dir, test::kGoodScene);
-  expect_refused("render " + scene + out + " --method riemann --jitter -1", "--jitter", dir);
+  expect_refused("render " + scene + out + " --method riemann --jitter -1",
+                 "--jitter: expected an integer seed in [0, 2^53], found '-1'", dir);
+  expect_refused("render " + scene + out + " --method riemann --jitter 1.5", "--jitter: expected an integer seed", dir);
   EXPECT_EQ(run("render " + scene + out + " --method riemann --jitter 7", dir).code, 0);
 }
 
