@@ -82,6 +82,20 @@ def render(scene: SceneLike, *, method: Optional[str] = None, step: Optional[flo
 has_vulkan: bool
 """Whether this build has the GPU backend (backend="vulkan")."""
 
+class MethodInfo(TypedDict):
+    name: str
+    paper: str
+    grid: bool
+    mesh: bool
+    gpu_grid: bool
+    gpu_mesh: bool
+    distributed: bool
+    termination: bool
+    jitter: bool
+
+def methods() -> List[MethodInfo]:
+    """The integration methods (SPEC §9) and what each supports (vri/methods.hpp)."""
+
 def devices() -> List[str]:
     """The Vulkan devices backend='vulkan' can use (`vri devices`)."""
 

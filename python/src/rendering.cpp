@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "interruptible.hpp"
 #include "vri/core/error.hpp"
+#include "vri/methods.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
 #include "vri/render/render_checks.hpp"
 #include "vri/render/scene_renderer.hpp"
@@ -168,7 +169,31 @@ py::array_t<float> to_numpy(Image image) {
   return py::array_t<float>({h, w, std::size_t{4}}, data->data(), owner);
 }
 
+// The method registry (vri/methods.hpp), one dict a method.
+py::list methods() {
+  py::list out;
+  for (const MethodInfo& info : vri::methods()) {
+    py::dict d;
+    d["name"] = std::string(info.name);
+    d["paper"] = std::string(info.paper);
+    d["grid"] = info.grid;
+    d["mesh"] = info.mesh;
+    d["gpu_grid"] = info.gpu_grid;
+    d["gpu_mesh"] = info.gpu_mesh;
+    d["distributed"] = info.distributed;
+    d["termination"] = info.termination;
+    d["jitter"] = info.jitter;
+    out.append(d);
+  }
+  return out;
+}
+
 void bind_rendering(py::module_& m) {
+  m.def("methods", &methods,
+        "The integration methods (SPEC §9), one dict each: name, paper, and what it supports -\n"
+        "grid, mesh (the volume kinds it renders), gpu_grid, gpu_mesh (backend='vulkan'),\n"
+        "distributed (mpirun), termination (early ray termination), jitter. The CLI, the viewer\n"
+        "and the checks read the same list (vri/methods.hpp).");
   m.def("devices", &list_vulkan_devices,
         "The Vulkan devices backend='vulkan' can use, one str each (`vri devices`): index, name, type,\n"
         "Vulkan version. [] when there are none; ValueError when vri or the machine lacks Vulkan.");

@@ -2,10 +2,11 @@
 import pathlib
 import re
 
+import pytest
 import vri
 
 STUB = pathlib.Path(__file__).resolve().parents[1] / "vri.pyi"
-TYPING_ONLY = {"SceneLike", "TransferFunctionLike", "Trace", "RaySignal"}
+TYPING_ONLY = {"SceneLike", "TransferFunctionLike", "Trace", "RaySignal", "MethodInfo"}
 
 
 def test_version_is_cmake_project_version(root, run_cli):
@@ -26,3 +27,17 @@ def test_every_public_function_has_a_docstring():
     for name in dir(vri):
         if not name.startswith("_"):
             assert (getattr(vri, name).__doc__ or "").strip(), name
+
+
+def test_methods_are_the_registry_and_say_what_renders(root):
+    methods = vri.methods()
+    assert [m["name"] for m in methods] == ["riemann", "preint1", "preint2", "preint2-dual", "adaptive", "exact",
+                                            "pt", "pt-cylindrical", "tet-raycast"]
+    assert all(m["paper"] for m in methods)
+    grid = root / "scenes" / "neghip.json"
+    for m in methods:  # each claim about grids holds for vri.render
+        if m["grid"]:
+            assert vri.render(grid, method=m["name"], width=4, height=3).shape == (3, 4, 4)
+        else:
+            with pytest.raises(ValueError, match=f"method '{m['name']}' needs a tetrahedral mesh"):
+                vri.render(grid, method=m["name"], width=4, height=3)
