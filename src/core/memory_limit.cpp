@@ -96,13 +96,20 @@ void check_allocation(std::uint64_t bytes, const std::string& what) {
 AccountScope::AccountScope(MemoryAccount& account) : previous_(std::exchange(t_account, &account)) {}
 AccountScope::~AccountScope() { t_account = previous_; }
 
-MemoryCharge::MemoryCharge(std::uint64_t bytes, const std::string& what) {
-  if (bytes == 0) return;
+void charge_process_bytes(std::uint64_t bytes, const std::string& what) {
   std::uint64_t held;
   if (!add_if_fits(g_in_use, bytes, memory_limit(), held)) refuse_process(bytes, what, held);
+}
+
+void release_process_bytes(std::uint64_t bytes) noexcept { g_in_use.fetch_sub(bytes, std::memory_order_relaxed); }
+
+MemoryCharge::MemoryCharge(std::uint64_t bytes, const std::string& what) {
+  if (bytes == 0) return;
+  charge_process_bytes(bytes, what);
   if (MemoryAccount* a = t_account) {
+    std::uint64_t held;
     if (!add_if_fits(a->used_, bytes, a->limit(), held)) {
-      g_in_use.fetch_sub(bytes, std::memory_order_relaxed);
+      release_process_bytes(bytes);
       refuse_account(bytes, what, *a, held);
     }
     account_ = a;
@@ -112,13 +119,6 @@ MemoryCharge::MemoryCharge(std::uint64_t bytes, const std::string& what) {
 
 MemoryCharge::MemoryCharge(std::uint64_t count, std::uint64_t size, const std::string& what)
     : MemoryCharge(product(count, size, what), what) {}
-
-void charge_process_bytes(std::uint64_t bytes, const std::string& what) {
-  std::uint64_t held;
-  if (!add_if_fits(g_in_use, bytes, memory_limit(), held)) refuse_process(bytes, what, held);
-}
-
-void release_process_bytes(std::uint64_t bytes) noexcept { g_in_use.fetch_sub(bytes, std::memory_order_relaxed); }
 
 MemoryCharge MemoryCharge::process_only(std::uint64_t bytes, const std::string& what) {
   struct Outside {  // the thread's account, put back however the charge ends
@@ -130,7 +130,7 @@ MemoryCharge MemoryCharge::process_only(std::uint64_t bytes, const std::string& 
 
 MemoryCharge::~MemoryCharge() {
   if (!bytes_) return;
-  g_in_use.fetch_sub(bytes_, std::memory_order_relaxed);
+  release_process_bytes(bytes_);
   if (account_) account_->used_.fetch_sub(bytes_, std::memory_order_relaxed);
 }
 
