@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "vri/integrators/adaptive_guaranteed.hpp"
-#include "vri/integrators/adaptive_simpson.hpp"
-#include "vri/integrators/riemann.hpp"
+#include "methods/adaptive/adaptive_guaranteed.hpp"
+#include "methods/adaptive/adaptive_simpson.hpp"
+#include "methods/riemann/riemann.hpp"
 #include "vri/render/renderer.hpp"
 #include "vri/scene/scene.hpp"
 

@@ -11,8 +11,8 @@
 #include "vri/integrators/make_integrator.hpp"
 #include "vri/render/renderer.hpp"
 #include "vri/scene/scene.hpp"
-#include "vri/tables/incremental_builder.hpp"
-#include "vri/tables/weighted_tables.hpp"
+#include "tables/incremental_builder.hpp"
+#include "tables/weighted_tables.hpp"
 
 namespace {
 

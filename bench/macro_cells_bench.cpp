@@ -20,11 +20,11 @@
 
 #include "vri/integrators/make_integrator.hpp"
 #include "vri/scene/scene.hpp"
-#include "vri/tables/table_builder.hpp"
-#include "vri/tables/zero_opacity.hpp"
-#include "vri/volume/builtin_volumes.hpp"
-#include "vri/volume/empty_space.hpp"
-#include "vri/volume/macro_cells.hpp"
+#include "tables/table_builder.hpp"
+#include "tables/zero_opacity.hpp"
+#include "volume/builtin_volumes.hpp"
+#include "volume/empty_space.hpp"
+#include "volume/macro_cells.hpp"
 
 namespace {
 

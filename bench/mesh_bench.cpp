@@ -4,10 +4,11 @@
 #include <benchmark/benchmark.h>
 
 #include "vri/integrators/make_integrator.hpp"
-#include "vri/projected/projected_tetrahedra.hpp"
+#include "methods/mesh_tables.hpp"
+#include "methods/projected/projected_tetrahedra.hpp"
 #include "vri/render/renderer.hpp"
 #include "vri/scene/scene.hpp"
-#include "vri/tables/cylindrical_table.hpp"
+#include "tables/cylindrical_table.hpp"
 
 namespace {
 

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "vri/integrators/exact.hpp"
-#include "vri/integrators/riemann.hpp"
+#include "methods/exact/exact.hpp"
+#include "methods/riemann/riemann.hpp"
 #include "vri/render/renderer.hpp"
 #include "vri/scene/scene.hpp"
 

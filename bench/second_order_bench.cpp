@@ -15,9 +15,9 @@
 #include <string>
 
 #include "vri/scene/scene.hpp"
-#include "vri/tables/half_second_order_table.hpp"
-#include "vri/tables/second_order_table.hpp"
-#include "vri/tables/second_order_weighted.hpp"
+#include "tables/half_second_order_table.hpp"
+#include "tables/second_order_table.hpp"
+#include "tables/second_order_weighted.hpp"
 
 namespace {
 

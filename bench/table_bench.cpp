@@ -13,8 +13,8 @@
 #include <tbb/global_control.h>
 
 #include "vri/scene/scene.hpp"
-#include "vri/tables/slab_integral.hpp"
-#include "vri/tables/table_builder.hpp"
+#include "tables/slab_integral.hpp"
+#include "tables/table_builder.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <string_view>
 
 #include "mpi_world.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 #include "vri/render/renderer.hpp"
 #include "vri/scene/scene.hpp"
 

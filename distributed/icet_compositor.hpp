@@ -9,7 +9,7 @@
 
 #include <mpi.h>
 
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 
 namespace vri::distributed {
 

@@ -13,7 +13,7 @@
 
 #include "fuzz_targets.hpp"
 #include "protocol.hpp"
-#include "vri/volume/builtin_volumes.hpp"
+#include "volume/builtin_volumes.hpp"
 
 extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t max_size);
 

@@ -50,7 +50,7 @@ every front door - Python, 1 and 2 threads, `--backend vulkan`, `mpirun -np 2|3`
 - each against the CLI's CPU image within its documented bound
 ([verification/differential.md](verification/differential.md)); each
 method's convergence order on smooth scenes is asserted by its unit tests
-(riemann 1, `preint1` 2, `preint2` 3: `tests/integrators/riemann_test.cpp`,
+(riemann 1, `preint1` 2, `preint2` 3: `tests/methods/riemann/riemann_test.cpp`,
 `preint2_test.cpp`).
 
 A check marked "(open)" is a documented bound vri does not meet yet; the

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "vri/core/ray.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
 

@@ -2,13 +2,31 @@
 // The methods of SPEC §9 and what each supports: the one list the front
 // doors read (the CLI's help, the scene's checks, the viewer's menu, the
 // Python docstring, the Vulkan and distributed front doors; issue 48).
-// Adding a method is a row in src/methods/method_registry.cpp and its
-// constructors in make_integrator.cpp (and vulkan_backend.cpp for the GPU).
+// Adding a method is its folder (src/methods/<method>/, with its
+// constructors) and its row in src/methods/method_registry.cpp.
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace vri {
+
+class Integrator;
+struct MethodSpec;
+class GridVolume;
+class TetMesh;
+class TransferFunction;
+struct Lighting;
+class GpuSceneRenderer;
+struct Scene;
+
+// A method's constructors (pbrt-v4's Create()): each lives in the method's
+// folder and parses and checks its own parameters from the MethodSpec.
+using GridIntegratorMaker = std::unique_ptr<Integrator> (*)(const MethodSpec&, const GridVolume&,
+                                                            const TransferFunction&, const Lighting&);
+using MeshIntegratorMaker = std::unique_ptr<Integrator> (*)(const MethodSpec&, const TetMesh&,
+                                                            const TransferFunction&, const Lighting&);
+using GpuRendererMaker = std::unique_ptr<GpuSceneRenderer> (*)(const Scene&);
 
 struct MethodInfo {
   std::string_view name;
@@ -21,6 +39,12 @@ struct MethodInfo {
   bool distributed = false; // mpirun ... --distributed (grids, split at brick faces)
   bool termination = false; // early ray termination (method.termination)
   bool jitter = false;      // a jittered first sample (method.jitter)
+  // Its per-ray integrator on a grid and on a mesh, and its GPU renderer (on
+  // what gpu_grid and gpu_mesh say; null in a build without Vulkan); null
+  // where it has none. make_integrator and the Vulkan backend call them.
+  GridIntegratorMaker make_grid = nullptr;
+  MeshIntegratorMaker make_mesh = nullptr;
+  GpuRendererMaker make_gpu = nullptr;
 };
 
 // Every method, in SPEC §9's order.

@@ -11,7 +11,7 @@
 #include "vri/core/error.hpp"
 #include "vri/core/memory_limit.hpp"
 #include "vri/render/image_compare.hpp"
-#include "vri/tables/table_request.hpp"
+#include "vri/render/table_request.hpp"
 
 namespace vri::python {
 

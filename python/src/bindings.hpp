@@ -6,7 +6,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 #include "vri/scene/scene.hpp"
 
 namespace vri::python {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "vri/core/error.hpp"
-#include "vri/volume/cell_traversal.hpp"
+#include "volume/cell_traversal.hpp"
 
 namespace vri {
 

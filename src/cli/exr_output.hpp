@@ -5,7 +5,7 @@
 // Debian's libopenexr-dev (VRI_HAVE_OPENEXR); otherwise .exr is refused.
 #include <filesystem>
 
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 
 namespace vri::cli {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "scene_options.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 #include "vri/scene/scene.hpp"
 
 namespace vri::cli {

@@ -12,7 +12,7 @@
 #include "vri/core/error.hpp"
 #include "vri/io/npy.hpp"
 #include "vri/scene/scene.hpp"
-#include "vri/tables/table_request.hpp"
+#include "vri/render/table_request.hpp"
 
 namespace vri::cli {
 

@@ -1,4 +1,4 @@
-#include "vri/core/checked_size.hpp"
+#include "core/checked_size.hpp"
 
 #include "vri/core/error.hpp"
 

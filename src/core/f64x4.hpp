@@ -1,6 +1,6 @@
 #pragma once
 // Four doubles in one GCC vector, for the adaptive integrators' Simpson
-// tries (integrators/simpson_colour_step.cpp): r, g, b and alpha of a sample,
+// tries (methods/adaptive/simpson_colour_step.cpp): r, g, b and alpha of a sample,
 // or the four new samples of a step. Written with GCC's vector extensions,
 // not intrinsics, so that the same code compiles to SSE2 pairs on x86-64's
 // baseline and to one AVX2 register in an "avx2" clone (simd.hpp,

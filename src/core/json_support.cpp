@@ -5,7 +5,6 @@
 
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
-#include "vri/io/file_io.hpp"
 
 namespace vri {
 
@@ -58,11 +57,6 @@ nlohmann::json parse_json(std::string_view text, const std::string& source) {
     if (auto p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
     throw Error(source + ": malformed JSON: " + printable(what, 200));
   }
-}
-
-std::string text_of(const std::filesystem::path& path) {
-  const auto bytes = read_file(path);
-  return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 }
 
 std::string found(const nlohmann::json& v) {

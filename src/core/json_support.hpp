@@ -26,8 +26,6 @@ int json_depth(std::string_view text, int limit = kMaxJsonDepth);
 // nested deeper than 100 levels" before parsing.
 nlohmann::json parse_json(std::string_view text, const std::string& source);
 
-// A file's bytes as text (vri::FileError if it cannot be read).
-std::string text_of(const std::filesystem::path& path);
 
 // A JSON value as the user wrote it, escaped and short, for "found ...".
 std::string found(const nlohmann::json& v);

@@ -13,7 +13,7 @@
 #endif
 
 #if VRI_SIMD && defined(__x86_64__)
-// The 8-lane AVX2 ray packets (integrators/float_packet.cpp), used where the
+// The 8-lane AVX2 ray packets (methods/preint/float_packet.cpp), used where the
 // CPU has AVX2 (checked at run time).
 #define VRI_HAVE_AVX2_PACKETS 1
 // The table kernels compiled twice, AVX2 + FMA and the x86-64 baseline, one

@@ -15,6 +15,11 @@ namespace vri {
 
 namespace fs = std::filesystem;
 
+std::string text_of(const std::filesystem::path& path) {
+  const auto bytes = read_file(path);
+  return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+}
+
 void require_regular_file(const fs::path& path) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);

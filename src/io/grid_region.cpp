@@ -1,4 +1,4 @@
-#include "vri/io/grid_region.hpp"
+#include "io/grid_region.hpp"
 
 #include <algorithm>
 #include <fcntl.h>

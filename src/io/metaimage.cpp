@@ -5,7 +5,7 @@
 // from the file straight into the volume's storage, compressed data through
 // zlib, after every size has been checked against the bytes present and the
 // memory budget.
-#include "vri/io/metaimage.hpp"
+#include "io/metaimage.hpp"
 
 #include <algorithm>
 #include <charconv>

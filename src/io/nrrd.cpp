@@ -1,5 +1,5 @@
 // NRRD volumes, read and written (nrrd.hpp); the format: https://teem.sourceforge.net/nrrd/format.html
-#include "vri/io/nrrd.hpp"
+#include "io/nrrd.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -17,7 +17,7 @@
 #include "gzip.hpp"
 #include "vri/core/error.hpp"
 #include "vri/io/file_io.hpp"
-#include "vri/io/grid_region.hpp"
+#include "io/grid_region.hpp"
 
 namespace vri {
 

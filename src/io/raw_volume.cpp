@@ -4,7 +4,7 @@
 
 #include "vri/core/error.hpp"
 #include "vri/io/file_io.hpp"
-#include "vri/io/grid_region.hpp"
+#include "io/grid_region.hpp"
 
 namespace vri {
 

@@ -3,7 +3,7 @@
 // (tiff_handle.hpp) straight into the volume's storage. Two passes: the
 // first reads every page's directory (sizes, types) and checks the whole
 // volume before anything is allocated; the second reads the samples.
-#include "vri/io/tiff.hpp"
+#include "io/tiff.hpp"
 
 #include <algorithm>
 #include <bit>

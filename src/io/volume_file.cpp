@@ -9,7 +9,7 @@
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
 #include "vri/io/file_io.hpp"
-#include "vri/io/vtk_legacy.hpp"
+#include "io/vtk_legacy.hpp"
 
 namespace vri {
 

@@ -1,4 +1,4 @@
-#include "vri/io/volvis_dat.hpp"
+#include "io/volvis_dat.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 // VTK XML image data (.vti): a regular grid read through the shared VTK XML
 // machinery (vtk_xml: DataArrays, base64, appended data, zlib blocks) and
-// decoded straight into the volume's storage (vtk_grid). See vri/io/vti.hpp.
+// decoded straight into the volume's storage (vtk_grid). See io/vti.hpp.
 // Format: https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html
 // ("ImageData": WholeExtent, Origin, Spacing, Direction; Piece Extent).
-#include "vri/io/vti.hpp"
+#include "io/vti.hpp"
 
 #include <algorithm>
 #include <array>
@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "vri/core/checked_size.hpp"
+#include "core/checked_size.hpp"
 #include "vri/core/error.hpp"
 #include "vri/io/file_io.hpp"
 #include "grid_samples.hpp"

@@ -1,14 +1,14 @@
-// VTK legacy unstructured grids of tetrahedra (see vri/io/vtk_legacy.hpp);
+// VTK legacy unstructured grids of tetrahedra (see io/vtk_legacy.hpp);
 // the header, cursor and attribute sections are vtk_legacy_reader, shared
 // with the STRUCTURED_POINTS reader (vtk_structured_points.cpp).
 // Format: https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html
-#include "vri/io/vtk_legacy.hpp"
+#include "io/vtk_legacy.hpp"
 
 #include <optional>
 #include <utility>
 #include <vector>
 
-#include "vri/core/checked_size.hpp"
+#include "core/checked_size.hpp"
 #include "vri/core/error.hpp"
 #include "vri/io/file_io.hpp"
 #include "vtk_legacy_reader.hpp"

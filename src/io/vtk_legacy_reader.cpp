@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "vri/core/checked_size.hpp"
+#include "core/checked_size.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/memory_limit.hpp"
 

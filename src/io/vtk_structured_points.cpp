@@ -1,5 +1,5 @@
 // Legacy VTK STRUCTURED_POINTS files as regular grids (see
-// vri/io/vtk_legacy.hpp): the header, cursor and attribute sections are
+// io/vtk_legacy.hpp): the header, cursor and attribute sections are
 // vtk_legacy_reader, shared with the unstructured-grid reader; the chosen
 // point array is decoded straight into the volume's storage (vtk_grid).
 // Format: https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html
@@ -12,10 +12,10 @@
 #include <optional>
 #include <vector>
 
-#include "vri/core/checked_size.hpp"
+#include "core/checked_size.hpp"
 #include "vri/core/error.hpp"
 #include "vri/io/file_io.hpp"
-#include "vri/io/vtk_legacy.hpp"
+#include "io/vtk_legacy.hpp"
 #include "vtk_grid.hpp"
 #include "vtk_legacy_reader.hpp"
 

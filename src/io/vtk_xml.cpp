@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "vri/core/checked_size.hpp"
+#include "core/checked_size.hpp"
 #include "vri/core/memory_limit.hpp"
 
 namespace vri::vtk::xml {

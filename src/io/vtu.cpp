@@ -1,13 +1,13 @@
 // VTK XML unstructured grids (.vtu) of tetrahedra: the file machinery (XML,
 // base64, appended data, zlib blocks) is vtk_xml, shared with the .vti reader.
 // Format: https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html
-#include "vri/io/vtu.hpp"
+#include "io/vtu.hpp"
 
 #include <charconv>
 #include <string_view>
 #include <vector>
 
-#include "vri/core/checked_size.hpp"
+#include "core/checked_size.hpp"
 #include "vri/core/error.hpp"
 #include "vri/io/file_io.hpp"
 #include "vtk_values.hpp"

@@ -1,4 +1,4 @@
-#include "vri/mesh/boundary_bvh.hpp"
+#include "mesh/boundary_bvh.hpp"
 
 #include <algorithm>
 #include <cmath>

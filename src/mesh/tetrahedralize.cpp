@@ -1,4 +1,4 @@
-#include "vri/mesh/tetrahedralize.hpp"
+#include "mesh/tetrahedralize.hpp"
 
 #include <string>
 

@@ -2,7 +2,22 @@
 
 #include <algorithm>
 
+#include "adaptive/adaptive_params.hpp"
+#include "exact/exact.hpp"
+#include "exact/mesh_exact.hpp"
+#include "preint/preint1.hpp"
+#include "preint/preint2.hpp"
+#include "preint2_dual/preint2_dual.hpp"
+#include "riemann/riemann.hpp"
+#include "tet_raycast/tet_raycast.hpp"
 #include "vri/core/error.hpp"
+
+// A GPU renderer exists in a build with the Vulkan backend only.
+#if VRI_VULKAN
+#define VRI_GPU(maker) maker
+#else
+#define VRI_GPU(maker) nullptr
+#endif
 
 namespace vri {
 
@@ -10,25 +25,32 @@ const std::vector<MethodInfo>& methods() {
   // clang-format off
   static const std::vector<MethodInfo> all = {
       {.name = "riemann", .paper = "Riemann sum of the emission-absorption integral (SPEC §4; Max 1995)",
-       .grid = true, .gpu_grid = true, .distributed = true, .termination = true, .jitter = true},
+       .grid = true, .gpu_grid = true, .distributed = true, .termination = true, .jitter = true,
+       .make_grid = make_riemann, .make_gpu = VRI_GPU(make_vulkan_riemann)},
       {.name = "preint1", .paper = "pre-integrated classification (Engel, Kraus & Ertl 2001); tables by Lum, Wilson & "
                                    "Ma 2004 and Roettger & Ertl 2002",
-       .grid = true, .gpu_grid = true, .distributed = true, .termination = true},
+       .grid = true, .gpu_grid = true, .distributed = true, .termination = true,
+       .make_grid = make_preint1, .make_gpu = VRI_GPU(make_vulkan_preint)},
       {.name = "preint2", .paper = "second-order pre-integration (El Hajjar, Marchesin, Dischler & Mongenet 2008)",
-       .grid = true, .gpu_grid = true, .distributed = true, .termination = true},
+       .grid = true, .gpu_grid = true, .distributed = true, .termination = true,
+       .make_grid = make_preint2, .make_gpu = VRI_GPU(make_vulkan_preint)},
       {.name = "preint2-dual", .paper = "second-order pre-integration on the cell walk (El Hajjar et al. 2008, §4)",
-       .grid = true, .gpu_grid = true, .distributed = true, .termination = true},
+       .grid = true, .gpu_grid = true, .distributed = true, .termination = true,
+       .make_grid = make_preint2_dual, .make_gpu = VRI_GPU(make_vulkan_preint2_dual)},
       {.name = "adaptive", .paper = "adaptive Simpson with error control (Campagnolo, Celes & de Figueiredo 2015)",
-       .grid = true, .gpu_grid = true, .distributed = true},
+       .grid = true, .gpu_grid = true, .distributed = true,
+       .make_grid = make_adaptive, .make_gpu = VRI_GPU(make_vulkan_adaptive)},
       {.name = "exact", .paper = "the integral in closed form between control points (SPEC §4), the reference",
-       .grid = true, .mesh = true, .distributed = true},
+       .grid = true, .mesh = true, .distributed = true,
+       .make_grid = make_exact, .make_mesh = make_mesh_exact},
       {.name = "pt", .paper = "projected tetrahedra (Shirley & Tuchman 1990) with the (l, s_f, s_b) table "
                               "(Roettger & Ertl 2002)",
        .mesh = true, .per_ray = false},
       {.name = "pt-cylindrical", .paper = "projected tetrahedra on the cylindrical table (Roettger & Ertl 2002, §4)",
        .mesh = true, .per_ray = false},
       {.name = "tet-raycast", .paper = "cell-to-cell ray casting (Garrity 1990) with the (l, s_f, s_b) table",
-       .mesh = true, .gpu_mesh = true},
+       .mesh = true, .gpu_mesh = true,
+       .make_mesh = make_tet_raycast, .make_gpu = VRI_GPU(make_vulkan_tet_raycast)},
   };
   // clang-format on
   return all;

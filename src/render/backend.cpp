@@ -1,8 +1,8 @@
 #include "vri/render/backend.hpp"
 
 #include "vri/core/error.hpp"
-#include "vri/tables/second_order_table.hpp"
-#include "vri/tables/table_builder.hpp"
+#include "tables/second_order_table.hpp"
+#include "tables/table_builder.hpp"
 
 namespace vri {
 

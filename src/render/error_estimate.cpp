@@ -1,4 +1,4 @@
-#include "vri/render/error_estimate.hpp"
+#include "render/error_estimate.hpp"
 
 namespace vri {
 

@@ -11,6 +11,18 @@
 
 namespace vri {
 
+TerminationBound termination_bound(const Image& image, double termination) {
+  TerminationBound bound;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const double remaining = 1 - double(image.pixel(x, y)[3]);
+      if (!(remaining < termination)) continue;
+      ++bound.pixels;
+      bound.max_remaining = std::max(bound.max_remaining, remaining);
+    }
+  return bound;
+}
+
 namespace {
 
 std::string g(double v) { return format_g(v); }

@@ -33,7 +33,7 @@ Image render(const Camera& camera, const Integrator& integrator, const RenderOpt
       const int x1 = std::min(W, x0 + ts);
       const int y1 = std::min(H, y0 + ts);
       // Two pixel rows at a time, handed over in blocks of 4 x 2 pixels: a
-      // packet's 8 rays (integrators/float_packet.hpp) then lie closer
+      // packet's 8 rays (methods/march/float_packet.hpp) then lie closer
       // together in the volume than 8 of one row, so they cross the same
       // voxels and macro cells more often.
       std::vector<Ray> rays(2 * (x1 - x0));

@@ -15,22 +15,23 @@
 #include "vri/camera/framing.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
-#include "vri/io/metaimage.hpp"
+#include "io/metaimage.hpp"
 #include "vri/io/npy.hpp"
-#include "vri/io/nrrd.hpp"
+#include "io/nrrd.hpp"
 #include "vri/io/raw_volume.hpp"
-#include "vri/io/tiff.hpp"
+#include "io/tiff.hpp"
 #include "vri/io/volume_file.hpp"
-#include "vri/io/volvis_dat.hpp"
-#include "vri/io/vti.hpp"
-#include "vri/io/vtk_legacy.hpp"
-#include "vri/io/vtu.hpp"
-#include "vri/tables/second_order_table.hpp"
-#include "vri/tables/table_builder.hpp"
-#include "vri/mesh/tetrahedralize.hpp"
+#include "io/volvis_dat.hpp"
+#include "io/vti.hpp"
+#include "io/vtk_legacy.hpp"
+#include "io/vtu.hpp"
+#include "tables/second_order_table.hpp"
+#include "tables/table_builder.hpp"
+#include "mesh/tetrahedralize.hpp"
 #include "vri/scene/scene.hpp"
-#include "vri/volume/builtin_volumes.hpp"
+#include "volume/builtin_volumes.hpp"
 #include "core/json_support.hpp"
+#include "vri/io/file_io.hpp"
 #include "scene/transfer_function_json.hpp"
 
 namespace vri {
@@ -40,7 +41,7 @@ using json = nlohmann::json;
 
 namespace {
 
-// parse_json, text_of, found and key_suggestion: core/json_support.hpp.
+// parse_json, found and key_suggestion: core/json_support.hpp; text_of: vri/io/file_io.hpp.
 
 // Typed access to one object of the scene; every error names the file, the
 // key path, what was expected and what was found.

@@ -13,7 +13,8 @@
 #include "core/json_support.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
-#include "vri/scene/value_range.hpp"
+#include "vri/io/file_io.hpp"
+#include "scene/value_range.hpp"
 
 namespace vri {
 
@@ -181,7 +182,7 @@ TransferFunctionRequest::TransferFunctionRequest(const json& j, std::string file
     const std::string name = j.contains("name") ? string_at("name") : std::string();
     ParaviewColormap map;
     try {
-      map = read_paraview_colormap(file, name);
+      map = parse_paraview_colormap(text_of(file), "ParaView colour map '" + printable(file.string()) + "'", name);
     } catch (const FileError& e) {
       throw FileError(where("paraview") + ": " + e.what());
     } catch (const Error& e) {

@@ -17,7 +17,7 @@
 
 #include "vri/scene/scene.hpp"
 #include "vri/transfer/colormap.hpp"
-#include "vri/transfer/paraview_colormap.hpp"
+#include "transfer/paraview_colormap.hpp"
 
 namespace vri {
 

@@ -1,4 +1,4 @@
-#include "vri/scene/value_range.hpp"
+#include "scene/value_range.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include "vri/shading/chord_lighting.hpp"
+#include "shading/chord_lighting.hpp"
 
-#include "vri/shading/lit_slab.hpp"
+#include "shading/lit_slab.hpp"
 
 namespace vri {
 

@@ -1,11 +1,11 @@
-#include "vri/tables/brute_builder.hpp"
+#include "tables/brute_builder.hpp"
 
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "vri/tables/slab_integral.hpp"
+#include "tables/slab_integral.hpp"
 
 namespace vri {
 

@@ -1,4 +1,4 @@
-#include "vri/tables/cylindrical_table.hpp"
+#include "tables/cylindrical_table.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "vri/tables/discrete_tf.hpp"
+#include "tables/discrete_tf.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "vri/tables/engel_builder.hpp"
+#include "tables/engel_builder.hpp"
 
 #include <tbb/parallel_for.h>
 

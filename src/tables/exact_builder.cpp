@@ -1,8 +1,8 @@
-#include "vri/tables/exact_builder.hpp"
+#include "tables/exact_builder.hpp"
 
 #include <tbb/parallel_for.h>
 
-#include "vri/tables/slab_integral.hpp"
+#include "tables/slab_integral.hpp"
 
 namespace vri {
 

@@ -1,4 +1,4 @@
-#include "vri/tables/half_second_order_table.hpp"
+#include "tables/half_second_order_table.hpp"
 
 #include <tbb/parallel_for.h>
 

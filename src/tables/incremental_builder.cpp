@@ -1,4 +1,4 @@
-#include "vri/tables/incremental_builder.hpp"
+#include "tables/incremental_builder.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "incremental_diagonals.hpp"
-#include "vri/tables/slab_integral.hpp"
+#include "tables/slab_integral.hpp"
 
 namespace vri {
 

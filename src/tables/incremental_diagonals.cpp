@@ -16,7 +16,7 @@
 #include <span>
 
 #include "core/simd.hpp"
-#include "vri/tables/slab_integral.hpp"
+#include "tables/slab_integral.hpp"
 
 namespace vri {
 

@@ -10,10 +10,10 @@
 #include <numeric>
 #include <vector>
 
-#include "vri/tables/discrete_tf.hpp"
-#include "vri/tables/piece_weights.hpp"
-#include "vri/tables/preintegration_table.hpp"
-#include "vri/tables/slab_rgba.hpp"
+#include "tables/discrete_tf.hpp"
+#include "tables/piece_weights.hpp"
+#include "tables/preintegration_table.hpp"
+#include "tables/slab_rgba.hpp"
 
 namespace vri {
 

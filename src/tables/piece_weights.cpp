@@ -1,8 +1,8 @@
-#include "vri/tables/piece_weights.hpp"
+#include "tables/piece_weights.hpp"
 
 #include <cmath>
 
-#include "vri/tables/slab_integral.hpp"
+#include "tables/slab_integral.hpp"
 
 namespace vri {
 

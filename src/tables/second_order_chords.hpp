@@ -9,7 +9,7 @@
 // (second_order_weighted.hpp) definitions.
 #include <algorithm>
 
-#include "vri/tables/discrete_tf.hpp"
+#include "tables/discrete_tf.hpp"
 
 namespace vri::detail {
 

@@ -1,4 +1,4 @@
-#include "vri/tables/second_order_exact.hpp"
+#include "tables/second_order_exact.hpp"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "vri/core/error.hpp"
-#include "vri/tables/table_builder.hpp"
+#include "tables/table_builder.hpp"
 
 namespace vri {
 

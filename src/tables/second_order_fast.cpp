@@ -1,4 +1,4 @@
-#include "vri/tables/second_order_fast.hpp"
+#include "tables/second_order_fast.hpp"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "core/simd.hpp"
-#include "vri/tables/incremental_builder.hpp"
-#include "vri/tables/table_builder.hpp"
-#include "vri/tables/weighted_tables.hpp"
+#include "tables/incremental_builder.hpp"
+#include "tables/table_builder.hpp"
+#include "tables/weighted_tables.hpp"
 
 namespace vri {
 

@@ -1,11 +1,11 @@
-#include "vri/tables/second_order_plain.hpp"
+#include "tables/second_order_plain.hpp"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
 #include "vri/core/cancelled.hpp"
 
-#include "vri/tables/table_builder.hpp"
+#include "tables/table_builder.hpp"
 
 namespace vri {
 

@@ -1,4 +1,4 @@
-#include "vri/tables/second_order_table.hpp"
+#include "tables/second_order_table.hpp"
 
 #include <tbb/parallel_for.h>
 
@@ -10,11 +10,11 @@
 #include "tables/trilinear.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
-#include "vri/tables/incremental_builder.hpp"
-#include "vri/tables/second_order_exact.hpp"
-#include "vri/tables/second_order_fast.hpp"
-#include "vri/tables/second_order_plain.hpp"
-#include "vri/tables/slab_integral.hpp"
+#include "tables/incremental_builder.hpp"
+#include "tables/second_order_exact.hpp"
+#include "tables/second_order_fast.hpp"
+#include "tables/second_order_plain.hpp"
+#include "tables/slab_integral.hpp"
 
 namespace vri {
 

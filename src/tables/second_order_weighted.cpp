@@ -1,10 +1,10 @@
-#include "vri/tables/second_order_weighted.hpp"
+#include "tables/second_order_weighted.hpp"
 
 #include <utility>
 #include <vector>
 
 #include "tables/second_order_chords.hpp"
-#include "vri/tables/weighted_tables.hpp"
+#include "tables/weighted_tables.hpp"
 
 namespace vri {
 

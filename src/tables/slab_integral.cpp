@@ -1,9 +1,9 @@
-#include "vri/tables/slab_integral.hpp"
+#include "tables/slab_integral.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "vri/tables/piece_weights.hpp"
+#include "tables/piece_weights.hpp"
 
 namespace vri {
 

@@ -1,4 +1,4 @@
-#include "vri/tables/sliced_builder.hpp"
+#include "tables/sliced_builder.hpp"
 
 #include <tbb/parallel_for.h>
 

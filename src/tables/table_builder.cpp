@@ -1,15 +1,15 @@
-#include "vri/tables/table_builder.hpp"
+#include "tables/table_builder.hpp"
 
 #include <cmath>
 #include <string>
 
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
-#include "vri/tables/brute_builder.hpp"
-#include "vri/tables/engel_builder.hpp"
-#include "vri/tables/exact_builder.hpp"
-#include "vri/tables/incremental_builder.hpp"
-#include "vri/tables/sliced_builder.hpp"
+#include "tables/brute_builder.hpp"
+#include "tables/engel_builder.hpp"
+#include "tables/exact_builder.hpp"
+#include "tables/incremental_builder.hpp"
+#include "tables/sliced_builder.hpp"
 
 namespace vri {
 

@@ -1,4 +1,4 @@
-#include "vri/tables/weighted_tables.hpp"
+#include "tables/weighted_tables.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "incremental_diagonals.hpp"
-#include "vri/tables/brute_builder.hpp"
-#include "vri/tables/table_builder.hpp"
+#include "tables/brute_builder.hpp"
+#include "tables/table_builder.hpp"
 
 namespace vri {
 

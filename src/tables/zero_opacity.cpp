@@ -1,4 +1,4 @@
-#include "vri/tables/zero_opacity.hpp"
+#include "tables/zero_opacity.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "vri/tables/zero_spots.hpp"
+#include "tables/zero_spots.hpp"
 
 #include <tbb/parallel_for.h>
 

@@ -1,4 +1,4 @@
-#include "vri/transfer/float_transfer_function.hpp"
+#include "transfer/float_transfer_function.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,9 +1,9 @@
-// ParaView colour-map presets -> linear pieces (vri/transfer/paraview_colormap.hpp).
+// ParaView colour-map presets -> linear pieces (transfer/paraview_colormap.hpp).
 // The colour spaces and the opacity curve are VTK's (vtkColorTransferFunction,
 // vtkMath's colour conversions, vtkPiecewiseFunction::GetTable), written again
 // here; tools/make_colormaps.py checks the same formulas against VTK and
 // stores VTK's tables, which tests/transfer/paraview_colormap_test.cpp matches.
-#include "vri/transfer/paraview_colormap.hpp"
+#include "transfer/paraview_colormap.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -365,10 +365,6 @@ ParaviewColormap parse_paraview_colormap(std::string_view text, const std::strin
     }
   }
   return map;
-}
-
-ParaviewColormap read_paraview_colormap(const std::filesystem::path& file, const std::string& name) {
-  return parse_paraview_colormap(text_of(file), "ParaView colour map '" + printable(file.string()) + "'", name);
 }
 
 std::vector<ColormapPoint> linear_colors(const ParaviewColormap& map, double tolerance) {

@@ -1,4 +1,4 @@
-#include "vri/volume/builtin_volumes.hpp"
+#include "volume/builtin_volumes.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "vri/volume/empty_space.hpp"
+#include "volume/empty_space.hpp"
 
 #include <algorithm>
 #include <cmath>

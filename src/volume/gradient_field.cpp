@@ -1,4 +1,4 @@
-#include "vri/volume/gradient_field.hpp"
+#include "volume/gradient_field.hpp"
 
 #include <algorithm>
 

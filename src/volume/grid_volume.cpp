@@ -8,7 +8,7 @@
 
 #include "vri/core/error.hpp"
 #include "vri/core/memory_limit.hpp"
-#include "vri/volume/macro_cells.hpp"
+#include "volume/macro_cells.hpp"
 
 namespace vri {
 

@@ -1,4 +1,4 @@
-#include "vri/volume/macro_cells.hpp"
+#include "volume/macro_cells.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "vri/volume/transparent_cells.hpp"
+#include "volume/transparent_cells.hpp"
 
 #include <tbb/parallel_for.h>
 

@@ -14,7 +14,7 @@
 #include "vri/core/memory_limit.hpp"
 #include "vri/core/zeroed_floats.hpp"
 #include "vri/mesh/tet_mesh.hpp"
-#include "vri/volume/gradient_field.hpp"
+#include "volume/gradient_field.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri {

@@ -57,7 +57,7 @@ const TransferFunction kTf({{10, 0.2, 0.3, 0.9, 0.0},
                             {90, 1.0, 0.2, 0.6, 0.4}});
 
 // A brick takes the whole ray's samples, slabs and cell pieces, and every
-// path composites in double (FrontToBack, src/integrators/ray_steps.hpp): the
+// path composites in double (FrontToBack, src/methods/march/ray_steps.hpp): the
 // bricks composited give the whole ray to a few double roundings (1e-12;
 // float compositing missed 1e-6 on fine steps: 7e-6 on engine, riemann at
 // h = 0.05). `guaranteed` takes its own step decisions in each brick: its

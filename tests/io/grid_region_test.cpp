@@ -1,7 +1,7 @@
 // Reading one part of a grid (distributed rendering's bricks): raw and NRRD
 // files read only the region's rows, gzip is read through keeping it, and
 // each gives the samples and geometry of the same region cut from the whole.
-#include "vri/io/grid_region.hpp"
+#include "io/grid_region.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,9 +13,9 @@
 #include "io/gzip.hpp"
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
-#include "vri/io/nrrd.hpp"
+#include "io/nrrd.hpp"
 #include "vri/io/raw_volume.hpp"
-#include "vri/volume/builtin_volumes.hpp"
+#include "volume/builtin_volumes.hpp"
 
 namespace vri {
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "vri/core/error.hpp"
-#include "vri/io/vtk_legacy.hpp"
-#include "vri/io/vtu.hpp"
+#include "io/vtk_legacy.hpp"
+#include "io/vtu.hpp"
 
 namespace vri::test {
 

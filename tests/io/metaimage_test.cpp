@@ -2,7 +2,7 @@
 // formatted headers wrote (tools/make_mhd_npy_fixtures.py), and against broken
 // and hostile headers: one line of vri::Error each, nothing allocated first.
 #include "test_support.hpp"
-#include "vri/io/metaimage.hpp"
+#include "io/metaimage.hpp"
 
 #include <gtest/gtest.h>
 

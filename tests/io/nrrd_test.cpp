@@ -1,4 +1,4 @@
-#include "vri/io/nrrd.hpp"
+#include "io/nrrd.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "io/pattern_fixtures.hpp"
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
-#include "vri/volume/builtin_volumes.hpp"
+#include "volume/builtin_volumes.hpp"
 
 namespace vri {
 namespace {

@@ -1,9 +1,9 @@
-// TIFF stacks (vri/io/tiff.hpp; SPEC §11: page = z, row = y) against files
+// TIFF stacks (io/tiff.hpp; SPEC §11: page = z, row = y) against files
 // VTK's vtkTIFFWriter, tifffile and tiffcp wrote (tools/make_tiff_fixtures.py):
 // each reads back exactly the samples of the formula the generator used and
 // of its .npy twin (the same array through numpy.save), renders the same
 // bytes as the twin, and bad input ends in one line of vri::Error.
-#include "vri/io/tiff.hpp"
+#include "io/tiff.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// The VTK XML image data reader (vri/io/vti.hpp): every flavour VTK 9 writes
+// The VTK XML image data reader (io/vti.hpp): every flavour VTK 9 writes
 // (tests/data/volume/, tools/make_vtk_volume_fixtures.py) reads back as the
 // raw file holding the same samples; every numeric type; a flipped Direction;
 // hostile files refused with one line before anything is allocated.
-#include "vri/io/vti.hpp"
+#include "io/vti.hpp"
 
 #include <gtest/gtest.h>
 

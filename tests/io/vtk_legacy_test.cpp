@@ -1,4 +1,4 @@
-#include "vri/io/vtk_legacy.hpp"
+#include "io/vtk_legacy.hpp"
 
 #include <gtest/gtest.h>
 

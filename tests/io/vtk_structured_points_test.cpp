@@ -1,4 +1,4 @@
-// The legacy VTK STRUCTURED_POINTS reader (vri/io/vtk_legacy.hpp): the files
+// The legacy VTK STRUCTURED_POINTS reader (io/vtk_legacy.hpp): the files
 // VTK 9 writes (tests/data/volume/, tools/make_vtk_volume_fixtures.py: the
 // active uint8 array as COLOR_SCALARS, the other as a FIELD array; or
 // SCALARS double) read back as the raw file holding the same samples; every
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "io/vtk_volume_test_support.hpp"
-#include "vri/io/vtk_legacy.hpp"
+#include "io/vtk_legacy.hpp"
 
 namespace vri {
 namespace {

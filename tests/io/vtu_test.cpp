@@ -1,4 +1,4 @@
-#include "vri/io/vtu.hpp"
+#include "io/vtu.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 
 #include "io/mesh_io_test_support.hpp"
 #include "test_support.hpp"
-#include "vri/io/vtk_legacy.hpp"
+#include "io/vtk_legacy.hpp"
 
 namespace vri {
 namespace {

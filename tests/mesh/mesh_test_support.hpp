@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "vri/mesh/tet_mesh.hpp"
-#include "vri/mesh/tetrahedralize.hpp"
+#include "mesh/tetrahedralize.hpp"
 #include "test_support.hpp"
 
 namespace vri::test {

@@ -1,4 +1,4 @@
-#include "vri/mesh/point_gradients.hpp"
+#include "mesh/point_gradients.hpp"
 
 #include <gtest/gtest.h>
 

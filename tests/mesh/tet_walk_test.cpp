@@ -1,4 +1,4 @@
-#include "vri/mesh/tet_walk.hpp"
+#include "mesh/tet_walk.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,6 +8,7 @@
 
 #include "methods/method_registry_support.hpp"
 #include "vri/integrators/make_integrator.hpp"
+#include "vri/render/backend.hpp"  // vulkan_backend_built
 
 namespace vri {
 namespace {
@@ -43,6 +44,18 @@ class EveryMethod : public ::testing::TestWithParam<std::string> {
  protected:
   const MethodInfo& method() const { return known_method(GetParam()); }
 };
+
+// A method's constructors are where its flags say it renders: one
+// registration holds both, and make_integrator and the Vulkan backend call
+// nothing else.
+TEST(MethodRegistry, ConstructorsAreWhereTheFlagsSay) {
+  for (const vri::MethodInfo& m : vri::methods()) {
+    SCOPED_TRACE(std::string(m.name));
+    EXPECT_EQ(m.make_grid != nullptr, m.grid && m.per_ray);
+    EXPECT_EQ(m.make_mesh != nullptr, m.mesh && m.per_ray);
+    EXPECT_EQ(m.make_gpu != nullptr, vri::vulkan_backend_built() && (m.gpu_grid || m.gpu_mesh));
+  }
+}
 
 TEST_P(EveryMethod, RendersTheVolumesItClaimsAndRefusesTheOthers) {
   for (const bool grid : {true, false}) {

@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include "test_support.hpp"
-#include "vri/integrators/adaptive_guaranteed.hpp"
-#include "vri/integrators/adaptive_simpson.hpp"
-#include "vri/integrators/exact.hpp"
-#include "vri/render/error_estimate.hpp"
+#include "methods/adaptive/adaptive_guaranteed.hpp"
+#include "methods/adaptive/adaptive_simpson.hpp"
+#include "methods/exact/exact.hpp"
+#include "render/error_estimate.hpp"
 #include "vri/render/renderer.hpp"
-#include "vri/volume/builtin_volumes.hpp"
+#include "volume/builtin_volumes.hpp"
 
 namespace vri {
 namespace {

@@ -1,4 +1,4 @@
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "vri/core/error.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 
 namespace vri {
 namespace {

@@ -8,10 +8,10 @@
 
 #include "test_support.hpp"
 #include "camera/screen_footprint.hpp"
-#include "vri/integrators/exact.hpp"
+#include "methods/exact/exact.hpp"
 #include "vri/integrators/make_integrator.hpp"
-#include "vri/integrators/preint1.hpp"
-#include "vri/integrators/riemann.hpp"
+#include "methods/preint/preint1.hpp"
+#include "methods/riemann/riemann.hpp"
 #include "vri/scene/scene.hpp"
 
 namespace vri {

@@ -11,7 +11,7 @@
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
 #include "vri/scene/scene.hpp"
-#include "vri/scene/value_range.hpp"
+#include "scene/value_range.hpp"
 #include "vri/transfer/colormap.hpp"
 
 namespace vri {

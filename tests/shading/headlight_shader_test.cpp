@@ -1,4 +1,4 @@
-#include "vri/shading/headlight_shader.hpp"
+#include "shading/headlight_shader.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "vri/tables/cylindrical_table.hpp"
+#include "tables/cylindrical_table.hpp"
 
 #include <gtest/gtest.h>
 

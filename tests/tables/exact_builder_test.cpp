@@ -1,7 +1,7 @@
 // `--builder exact` against closed forms and an independent quadrature of the
 // TransferFunction, and every other builder against `exact` on transfer
 // functions with features between the table scalars (issue 16, item 1).
-#include "vri/tables/exact_builder.hpp"
+#include "tables/exact_builder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,10 +11,10 @@
 #include <string>
 
 #include "tables/random_tf.hpp"
-#include "vri/tables/slab_integral.hpp"
-#include "vri/tables/table_builder.hpp"
-#include "vri/tables/weighted_tables.hpp"
-#include "vri/tables/zero_opacity.hpp"
+#include "tables/slab_integral.hpp"
+#include "tables/table_builder.hpp"
+#include "tables/weighted_tables.hpp"
+#include "tables/zero_opacity.hpp"
 
 namespace vri {
 namespace {

@@ -3,8 +3,8 @@
 // (`brute`) so that table error, not builder error, is what those tests see.
 #include <memory>
 
-#include "vri/tables/brute_builder.hpp"
-#include "vri/tables/table_builder.hpp"
+#include "tables/brute_builder.hpp"
+#include "tables/table_builder.hpp"
 
 namespace vri::test {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "vri/core/error.hpp"
-#include "vri/integrators/piece_integrator.hpp"
+#include "methods/exact/piece_integrator.hpp"
 
 namespace vri {
 namespace {

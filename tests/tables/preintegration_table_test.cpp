@@ -1,4 +1,4 @@
-#include "vri/tables/preintegration_table.hpp"
+#include "tables/preintegration_table.hpp"
 
 #include <gtest/gtest.h>
 

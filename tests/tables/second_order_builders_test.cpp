@@ -10,9 +10,9 @@
 
 #include "tables/random_tf.hpp"
 #include "tables/second_order_chord_model.hpp"
-#include "vri/tables/second_order_table.hpp"
-#include "vri/tables/second_order_weighted.hpp"
-#include "vri/tables/slab_integral.hpp"
+#include "tables/second_order_table.hpp"
+#include "tables/second_order_weighted.hpp"
+#include "tables/slab_integral.hpp"
 
 namespace vri {
 namespace {

@@ -7,9 +7,9 @@
 // linear across a chord.
 #include <algorithm>
 
-#include "vri/tables/incremental_builder.hpp"
-#include "vri/tables/second_order_weighted.hpp"
-#include "vri/tables/weighted_tables.hpp"
+#include "tables/incremental_builder.hpp"
+#include "tables/second_order_weighted.hpp"
+#include "tables/weighted_tables.hpp"
 
 namespace vri::test {
 

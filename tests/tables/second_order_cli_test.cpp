@@ -9,7 +9,7 @@
 #include "test_support.hpp"
 #include "vri/io/npy.hpp"
 #include "vri/scene/scene.hpp"
-#include "vri/tables/second_order_table.hpp"
+#include "tables/second_order_table.hpp"
 
 namespace vri {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "tables/random_tf.hpp"
-#include "vri/tables/half_second_order_table.hpp"
+#include "tables/half_second_order_table.hpp"
 
 namespace vri {
 namespace {

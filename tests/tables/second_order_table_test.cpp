@@ -11,9 +11,10 @@
 
 #include "tables/random_tf.hpp"
 #include "vri/core/error.hpp"
-#include "vri/tables/second_order_exact.hpp"
-#include "vri/tables/second_order_table.hpp"
-#include "vri/tables/slab_integral.hpp"
+#include "vri/integrators/method_spec.hpp"  // kDefaultSecondOrderIterations
+#include "tables/second_order_exact.hpp"
+#include "tables/second_order_table.hpp"
+#include "tables/slab_integral.hpp"
 
 namespace vri {
 namespace {

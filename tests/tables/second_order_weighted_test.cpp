@@ -2,7 +2,7 @@
 // weights sum to the unweighted slab, the entries match an independent
 // quadrature of the weighted integrals, fast matches its chord model, and the
 // bytes do not depend on the thread count.
-#include "vri/tables/second_order_weighted.hpp"
+#include "tables/second_order_weighted.hpp"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>

@@ -1,4 +1,4 @@
-#include "vri/tables/slab_integral.hpp"
+#include "tables/slab_integral.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <random>
 
 #include "random_tf.hpp"
-#include "vri/tables/brute_builder.hpp"
-#include "vri/tables/piece_weights.hpp"
+#include "tables/brute_builder.hpp"
+#include "tables/piece_weights.hpp"
 
 namespace vri {
 namespace {

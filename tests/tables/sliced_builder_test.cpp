@@ -1,4 +1,4 @@
-#include "vri/tables/sliced_builder.hpp"
+#include "tables/sliced_builder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 
 #include "tables/random_tf.hpp"
 #include "vri/core/error.hpp"
-#include "vri/tables/brute_builder.hpp"
+#include "tables/brute_builder.hpp"
 
 namespace vri {
 namespace {

@@ -7,9 +7,9 @@
 
 #include "tables/random_tf.hpp"
 #include "vri/core/error.hpp"
-#include "vri/tables/brute_builder.hpp"
-#include "vri/tables/slab_integral.hpp"
-#include "vri/tables/table_builder.hpp"
+#include "tables/brute_builder.hpp"
+#include "tables/slab_integral.hpp"
+#include "tables/table_builder.hpp"
 
 namespace vri {
 namespace {

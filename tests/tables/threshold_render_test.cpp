@@ -15,7 +15,7 @@
 #include "test_support.hpp"
 #include "vri/render/scene_renderer.hpp"
 #include "vri/scene/scene.hpp"
-#include "vri/tables/discrete_tf.hpp"
+#include "tables/discrete_tf.hpp"
 
 namespace vri {
 namespace {

@@ -1,6 +1,6 @@
 // The weighted tables of interpolated lighting (tables/weighted_tables.hpp)
 // against the unweighted table and against every entry integrated on its own.
-#include "vri/tables/weighted_tables.hpp"
+#include "tables/weighted_tables.hpp"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -10,9 +10,9 @@
 
 #include "tables/random_tf.hpp"
 #include "vri/core/error.hpp"
-#include "vri/tables/brute_builder.hpp"
-#include "vri/tables/incremental_builder.hpp"
-#include "vri/tables/table_builder.hpp"
+#include "tables/brute_builder.hpp"
+#include "tables/incremental_builder.hpp"
+#include "tables/table_builder.hpp"
 
 namespace vri {
 namespace {

@@ -1,7 +1,7 @@
 // ZeroSpots (tables/zero_spots.hpp): a spot is zero exactly when the eight
 // entries a trilinear blend there reads are zero in every table, checked
 // against the entries themselves on sparse random tables.
-#include "vri/tables/zero_spots.hpp"
+#include "tables/zero_spots.hpp"
 
 #include <gtest/gtest.h>
 

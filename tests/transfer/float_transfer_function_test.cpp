@@ -1,7 +1,7 @@
 // FloatTransferFunction (riemann's float path) against TransferFunction: the
 // same segment for every float scalar, values within float rounding, zero
 // opacity exactly where the function is zero, steps and end values as SPEC §3.
-#include "vri/transfer/float_transfer_function.hpp"
+#include "transfer/float_transfer_function.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// ParaView colour-map import (vri/transfer/paraview_colormap.hpp) against
+// ParaView colour-map import (transfer/paraview_colormap.hpp) against
 // VTK's own tables: tools/make_colormaps.py wrote the presets
 // (tests/data/tf/paraview_presets.json: Lab, CIELAB, Diverging, HSV with and
 // without wrap, Step, RGB with a jump; opacity with midpoint and sharpness) and
@@ -12,8 +12,9 @@
 
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
+#include "vri/io/file_io.hpp"
 #include "vri/scene/scene.hpp"
-#include "vri/transfer/paraview_colormap.hpp"
+#include "transfer/paraview_colormap.hpp"
 
 namespace vri {
 namespace {
@@ -88,7 +89,7 @@ TEST(ParaviewColormap, ColoursAndOpacityMatchVtkWithin1Over256) {
 
 TEST(ParaviewColormap, FewPiecesForLinearMaps) {
   // RGB: the file's own nodes (the jump at 0.5 kept as two points).
-  const auto map = read_paraview_colormap(kTf / "paraview_presets.json", "RGB Jump");
+  const auto map = parse_paraview_colormap(text_of(kTf / "paraview_presets.json"), "presets", "RGB Jump");
   const auto colors = linear_colors(map);
   ASSERT_EQ(colors.size(), 4u);
   EXPECT_EQ(colors[1].x, 0.5);
@@ -100,7 +101,7 @@ TEST(ParaviewColormap, FewPiecesForLinearMaps) {
       R"([{"Name": "l", "RGBPoints": [0, 0, 0, 0, 1, 0.25, 0.25, 0.25, 4, 1, 1, 1]}])", "t");
   EXPECT_EQ(linear_colors(line).size(), 2u);
   // A smooth Lab or Diverging curve: tens of pieces, not thousands.
-  const auto lab = linear_colors(read_paraview_colormap(kTf / "paraview_presets.json", "Lab Ramp"));
+  const auto lab = linear_colors(parse_paraview_colormap(text_of(kTf / "paraview_presets.json"), "presets", "Lab Ramp"));
   EXPECT_LT(lab.size(), 40u);
   EXPECT_GT(lab.size(), 3u);
 }

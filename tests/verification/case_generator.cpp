@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vri/volume/builtin_volumes.hpp"
+#include "volume/builtin_volumes.hpp"
 
 namespace vri::verify {
 

@@ -12,7 +12,7 @@
 // integrated as well as the linearisation allows. (At a fixed 0.01 voxel,
 // 500 points over the range left it 1.9e-3 from `exact`, 2.2e-4 at 0.0025.)
 #include "vri/core/rgba.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 #include "vri/scene/scene.hpp"
 
 namespace vri::verify {

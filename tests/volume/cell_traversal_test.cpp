@@ -1,4 +1,4 @@
-#include "vri/volume/cell_traversal.hpp"
+#include "volume/cell_traversal.hpp"
 
 #include <gtest/gtest.h>
 

@@ -10,10 +10,10 @@
 #include <utility>
 
 #include "test_support.hpp"
-#include "vri/volume/float_sampler.hpp"
+#include "volume/float_sampler.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/memory_limit.hpp"
-#include "vri/volume/builtin_volumes.hpp"
+#include "volume/builtin_volumes.hpp"
 
 namespace vri {
 namespace {

@@ -1,4 +1,4 @@
-#include "vri/volume/macro_cells.hpp"
+#include "volume/macro_cells.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 
 #include "tables/random_tf.hpp"
 #include "test_support.hpp"
-#include "vri/tables/second_order_table.hpp"
-#include "vri/tables/zero_opacity.hpp"
-#include "vri/volume/empty_space.hpp"
+#include "tables/second_order_table.hpp"
+#include "tables/zero_opacity.hpp"
+#include "volume/empty_space.hpp"
 
 namespace vri {
 namespace {

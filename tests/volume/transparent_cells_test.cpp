@@ -1,4 +1,4 @@
-#include "vri/volume/transparent_cells.hpp"
+#include "volume/transparent_cells.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,9 @@
 #include "test_support.hpp"
 #include "vri/core/error.hpp"
 #include "vri/core/memory_limit.hpp"
-#include "vri/tables/zero_opacity.hpp"
-#include "vri/volume/empty_space.hpp"
-#include "vri/volume/macro_cells.hpp"
+#include "tables/zero_opacity.hpp"
+#include "volume/empty_space.hpp"
+#include "volume/macro_cells.hpp"
 
 namespace vri {
 namespace {

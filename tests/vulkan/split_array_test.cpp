@@ -23,8 +23,8 @@
 #include "vri/core/error.hpp"
 #include "vri/render/backend.hpp"
 #include "vri/scene/scene.hpp"
-#include "vri/tables/second_order_table.hpp"
-#include "vri/tables/sliced_builder.hpp"
+#include "tables/second_order_table.hpp"
+#include "tables/sliced_builder.hpp"
 #include "vulkan_device.hpp"
 
 namespace vri {

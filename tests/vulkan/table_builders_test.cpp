@@ -20,11 +20,11 @@
 #include "test_support.hpp"
 #include "vri/render/backend.hpp"
 #include "vri/scene/scene.hpp"
-#include "vri/tables/discrete_tf.hpp"
-#include "vri/tables/incremental_builder.hpp"
-#include "vri/tables/second_order_table.hpp"
-#include "vri/tables/sliced_builder.hpp"
-#include "vri/tables/table_builder.hpp"
+#include "tables/discrete_tf.hpp"
+#include "tables/incremental_builder.hpp"
+#include "tables/second_order_table.hpp"
+#include "tables/sliced_builder.hpp"
+#include "tables/table_builder.hpp"
 #include "vulkan_device.hpp"
 
 namespace vri {

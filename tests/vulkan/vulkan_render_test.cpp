@@ -1,5 +1,5 @@
 // riemann, preint1, preint2 and preint2-dual on the Vulkan backend
-// (vulkan/host/vulkan_riemann.hpp, vulkan_preint.hpp, vulkan_preint2_dual.hpp)
+// (src/methods/riemann/vulkan_riemann.hpp, vulkan_preint.hpp, vulkan_preint2_dual.hpp)
 // against the CPU float path (issue 22, item 4: within 1e-4 per channel; on
 // lavapipe the first three agree to the byte), on every bundled grid scene -
 // lit ones lit, the pre-integrated ones in both lighting modes - with riemann's jitter and early termination, and
@@ -18,7 +18,7 @@
 #include "vri/render/scene_renderer.hpp"
 #include "vri/scene/scene.hpp"
 #include "vri/scene/scene_overrides.hpp"
-#include "vri/volume/builtin_volumes.hpp"
+#include "volume/builtin_volumes.hpp"
 #include "vri/core/error.hpp"
 #include "mesh/mesh_test_support.hpp"
 #include "vulkan_device.hpp"

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "vri/core/vec3.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 
 namespace vri::viewer {
 

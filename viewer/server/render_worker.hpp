@@ -27,7 +27,7 @@
 #include "server_limits.hpp"
 #include "protocol.hpp"
 #include "vri/render/cancellation.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 #include "vri/render/scene_renderer.hpp"
 
 namespace vri::viewer {

@@ -1,11 +1,11 @@
 #pragma once
-// A DiscreteTf (include/vri/tables/discrete_tf.hpp) on the device, as
+// A DiscreteTf (src/tables/discrete_tf.hpp) on the device, as
 // shaders/discrete_tf.glsl reads it: r, g, b, tau at the table scalars, the
 // split bins' first sub-pieces and the sub-pieces, in float.
 #include <memory>
 
 #include "gpu_buffer.hpp"
-#include "vri/tables/discrete_tf.hpp"
+#include "tables/discrete_tf.hpp"
 
 namespace vri::vulkan {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "vri/core/error.hpp"
-#include "vri/volume/macro_cells.hpp"
+#include "volume/macro_cells.hpp"
 
 namespace vri::vulkan {
 

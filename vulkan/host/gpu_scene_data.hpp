@@ -10,9 +10,9 @@
 
 #include "gpu_array.hpp"
 #include "gpu_buffer.hpp"
-#include "vri/shading/headlight_shader.hpp"
-#include "vri/transfer/float_transfer_function.hpp"
-#include "vri/volume/empty_space.hpp"
+#include "shading/headlight_shader.hpp"
+#include "transfer/float_transfer_function.hpp"
+#include "volume/empty_space.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri::vulkan {

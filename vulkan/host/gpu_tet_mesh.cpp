@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "vri/core/error.hpp"
-#include "vri/mesh/boundary_bvh.hpp"
-#include "vri/mesh/point_gradients.hpp"
-#include "vri/mesh/tet_walk.hpp"
+#include "mesh/boundary_bvh.hpp"
+#include "mesh/point_gradients.hpp"
+#include "mesh/tet_walk.hpp"
 
 namespace vri::vulkan {
 

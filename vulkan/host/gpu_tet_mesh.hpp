@@ -1,5 +1,5 @@
 #pragma once
-// A tetrahedral mesh on the device, as shaders/tet_raycast.comp walks it: the
+// A tetrahedral mesh on the device, as src/methods/tet_raycast/tet_raycast.comp walks it: the
 // CPU walk's face planes and linear fields (TetWalk), the neighbours, the
 // BoundaryBvh's nodes and faces, and, lit, each tetrahedron's point
 // gradients with the barycentric coordinates' gradients (PointGradients) -
@@ -9,7 +9,7 @@
 
 #include "gpu_buffer.hpp"
 #include "vri/mesh/tet_mesh.hpp"
-#include "vri/mesh/tet_walk.hpp"
+#include "mesh/tet_walk.hpp"
 
 namespace vri::vulkan {
 

@@ -12,11 +12,15 @@
 #include <vector>
 
 #include "compute_kernel.hpp"
-#include "ray_setup.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri::vulkan {
+
+// Pixels first .. first + count - 1, row by row (pixel p is (p % width, p / width)).
+struct PixelSpan {
+  std::size_t first = 0, count = 0;
+};
 
 struct GridParams {
   std::uint32_t sy, sz;

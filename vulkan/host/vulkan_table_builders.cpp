@@ -9,8 +9,8 @@
 #include "gpu_array.hpp"
 #include "gpu_discrete_tf.hpp"
 #include "vri/core/error.hpp"
-#include "vri/tables/incremental_builder.hpp"
-#include "vri/tables/second_order_weighted.hpp"
+#include "tables/incremental_builder.hpp"
+#include "tables/second_order_weighted.hpp"
 
 namespace vri::vulkan {
 

@@ -16,8 +16,8 @@
 #include <memory>
 
 #include "compute_kernel.hpp"
-#include "vri/tables/second_order_table.hpp"
-#include "vri/tables/table_builder.hpp"
+#include "tables/second_order_table.hpp"
+#include "tables/table_builder.hpp"
 
 namespace vri::vulkan {
 

@@ -1,5 +1,5 @@
 // The trilinear field along a ray inside one cell as a cubic in t, and what
-// the guaranteed adaptive march needs of it, as src/integrators/cubic.cpp
+// the guaranteed adaptive march needs of it, as src/methods/exact/cubic.cpp
 // computes it on the CPU (in float here): c.x + c.y t + c.z t^2 + c.w t^3.
 
 float cubic_at(vec4 c, float t) { return ((c.w * t + c.z) * t + c.y) * t + c.x; }

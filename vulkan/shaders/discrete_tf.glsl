@@ -1,5 +1,5 @@
 // The transfer function as the pre-integration tables see it, as DiscreteTf
-// (include/vri/tables/discrete_tf.hpp) holds it: its values at the N table
+// (src/tables/discrete_tf.hpp) holds it: its values at the N table
 // scalars and, for a bin split at control points inside it, its linear
 // sub-pieces; at_index(k, w) as DiscreteTf::at_index(k + w), in float. Three
 // buffers from binding DISCRETE_TF_BINDING on (host/gpu_discrete_tf.hpp).

@@ -1,4 +1,4 @@
-// exp(-x) for x >= 0, the CPU float paths' own (src/integrators/float_math.hpp:
+// exp(-x) for x >= 0, the CPU float paths' own (src/methods/march/float_math.hpp:
 // Cephes' expf, Cody and Waite's reduction), operation for operation, so a GPU
 // pixel differs from the CPU's by roundings alone and not by two different
 // exp implementations.

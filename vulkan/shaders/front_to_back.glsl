@@ -1,5 +1,5 @@
 // Front-to-back compositing in double-float (double_float.glsl), as the
-// CPU's FrontToBack composites in double (src/integrators/ray_steps.hpp):
+// CPU's FrontToBack composites in double (src/methods/march/ray_steps.hpp):
 // each sample's or slab's value is float, the running colour C and
 // transmittance T about 48 bits. In float they rounded once a slab, which
 // grows over the thousands of slabs of a fine step (4e-5 on engine with

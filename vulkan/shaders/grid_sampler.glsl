@@ -1,5 +1,5 @@
 // The volume's samples and their trilinear interpolation, as FloatSampler
-// (include/vri/volume/float_sampler.hpp) does on the CPU: the cell of a grid
+// (src/volume/float_sampler.hpp) does on the CPU: the cell of a grid
 // position clamped onto the box, float fractions, the eight corners
 // converted to float exactly and interpolated in the same order. The samples
 // stay in their stored type, packed in 32-bit words (uint8 four to a word,

@@ -1,6 +1,6 @@
 #version 450
 // Lum, Wilson & Ma 2004's incremental subrange integration (§4.2, Figs. 4-5)
-// on the GPU, as IncrementalBuilder (include/vri/tables/incremental_builder.hpp,
+// on the GPU, as IncrementalBuilder (src/tables/incremental_builder.hpp,
 // src/tables/incremental_diagonals.cpp) computes it on the CPU, in float.
 // Entry (i, i+m) composites the m pieces between table scalars i and i+m,
 // each of length l/m; along diagonal m the pieces fall into bins of m, in

@@ -1,4 +1,4 @@
-// PieceWeights (include/vri/tables/piece_weights.hpp, piece_weights.cpp) in
+// PieceWeights (src/tables/piece_weights.hpp, piece_weights.cpp) in
 // float: how one piece of a slab - tau and c linear in t, optical
 // thicknesses A and B at its ends - turns colours into premultiplied colour,
 // forward and backward (integration by parts, docs/PREINTEGRATION.md §2):

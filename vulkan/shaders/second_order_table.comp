@@ -1,7 +1,7 @@
 #version 450
 // El Hajjar et al. 2008's second-order table on the GPU (their §6.2 builds
 // it in graphics hardware), as FastSecondOrderBuilder
-// (include/vri/tables/second_order_fast.hpp) computes it on the CPU: entry
+// (src/tables/second_order_fast.hpp) computes it on the CPU: entry
 // (s_f, s_m, s_b) walks the parabola through its three scalars (their eq. 2)
 // in K chords, each the bilinear lookup of the first-order table of length
 // L/K at its two ends, composited front to back. One invocation per entry.

@@ -1,5 +1,5 @@
 // SPEC §5 shading as the CPU float paths compute it
-// (src/integrators/float_shading.hpp): c_lit = c a + b with a = ka + kd x,
+// (src/methods/march/float_shading.hpp): c_lit = c a + b with a = ka + kd x,
 // b = ks x^p, x = |N . d|; x^p as exp(p ln x) by the CPU's own polynomials
 // (float_math.hpp). The gradient comes from the caller (grids:
 // grid_sampler.glsl's gradient_at). Needs before it: exp_neg.glsl, and in

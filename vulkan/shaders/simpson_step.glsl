@@ -1,5 +1,5 @@
 // One try of the outer integral on the five samples f (r, g, b lit, tau) of
-// a step [t, t + h], as src/integrators/simpson_colour_step.hpp computes it
+// a step [t, t + h], as src/methods/adaptive/simpson_colour_step.hpp computes it
 // (Campagnolo, Celes & de Figueiredo 2015, Algorithm 3, in float): the
 // optical depth from t to each sample from the quartic through the tau
 // samples, then r, g, b and alpha (c tau T e^{-depth}) by Simpson's rule over

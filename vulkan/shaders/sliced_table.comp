@@ -1,7 +1,7 @@
 #version 450
 // A first-order pre-integration table on the GPU by Roettger & Ertl 2002, §3
 // ("hardware-accelerated pre-integration"), as SlicedBuilder
-// (include/vri/tables/sliced_builder.hpp) computes it on the CPU: one
+// (src/tables/sliced_builder.hpp) computes it on the CPU: one
 // invocation per entry (s_f, s_b) - their rasterised rectangle - walks the
 // n steps of length l/n back to front, step k sampling the transfer function
 // at s = s_f + (s_b - s_f)(k + 1/2)/n and blending the Stein et al. slab of

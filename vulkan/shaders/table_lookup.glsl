@@ -1,5 +1,5 @@
 // The pre-integration tables' lookups in float, as FloatAxis, FloatLookup
-// and SecondOrderFloatLookup (include/vri/tables/float_lookup.hpp,
+// and SecondOrderFloatLookup (src/tables/float_lookup.hpp,
 // second_order_float_lookup.hpp): a scalar's place on the table axis (entry
 // i, weight w of entry i + 1), then the entries around it blended in the
 // same order: preint1's four around (s_f, s_b) bilinearly, preint2's eight

@@ -1,5 +1,5 @@
 // The transfer function in float, as FloatTransferFunction
-// (include/vri/transfer/float_transfer_function.hpp): a uniform grid of bins
+// (src/transfer/float_transfer_function.hpp): a uniform grid of bins
 // over the breakpoints names a segment near the scalar, a short walk finds
 // the one that holds it, and its channels are value + slope (s - s_ref).
 // Needs before it: buffer Tf { float tf[]; } (breakpoints, then s_ref, then

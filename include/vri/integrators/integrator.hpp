@@ -20,7 +20,7 @@ class Integrator {
   // out[i] = integrate(rays[i]) for i < n, the same bytes; the renderer hands
   // over two rows of a tile at a time, in blocks of 4 x 2 pixels, so a method
   // may march neighbouring rays together (the packets of 8,
-  // integrators/float_packet.hpp).
+  // methods/march/float_packet.hpp).
   virtual void integrate_row(const Ray* rays, int n, Rgba* out) const {
     for (int i = 0; i < n; ++i) out[i] = integrate(rays[i]);
   }

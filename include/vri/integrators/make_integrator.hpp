@@ -7,8 +7,6 @@
 #include "vri/integrators/integrator.hpp"
 #include "vri/integrators/method_spec.hpp"
 #include "vri/mesh/tet_mesh.hpp"
-#include "vri/tables/slab_table.hpp"
-#include "vri/tables/weighted_tables.hpp"
 #include "vri/shading/lighting.hpp"
 #include "vri/transfer/transfer_function.hpp"
 #include "vri/volume/grid_volume.hpp"
@@ -34,16 +32,5 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVo
 // and so is `pt`, which renders whole images (render_projected), not rays.
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
                                             const TransferFunction& tf, const Lighting& lighting = {});
-
-// The (l, s_f, s_b) table the mesh methods use: table_size scalars a side,
-// length_samples lengths up to the mesh's longest edge.
-std::unique_ptr<SlabTable> make_slab_table(const MethodSpec& spec, const TetMesh& mesh, const TransferFunction& tf);
-
-// The weighted tables of lighting mode interpolated over the same
-// (l, s_f, s_b) grid (build_weighted_length_tables); null unless lighting is
-// enabled in mode interpolated.
-std::unique_ptr<WeightedLengthTables> make_weighted_length_tables(const MethodSpec& spec, const TetMesh& mesh,
-                                                                  const TransferFunction& tf,
-                                                                  const Lighting& lighting);
 
 }  // namespace vri

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <istream>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "vri/core/charged_vector.hpp"
@@ -13,6 +14,8 @@ namespace vri {
 
 // Reads the whole file; throws vri::Error naming the path if it cannot.
 ChargedVector<std::byte> read_file(const std::filesystem::path& path);
+// The same as text (a scene, a transfer function, a colour map).
+std::string text_of(const std::filesystem::path& path);
 // vri::FileError unless `path` is missing (the open says so) or a regular
 // file: a FIFO would block the open forever, a device never ends (issue 47).
 // Every reader of vri calls it before opening.

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 #include "vri/volume/grid_volume.hpp"
 
 namespace vri {

@@ -28,7 +28,7 @@ enum class VolumeFormat {
 // vri::Error for a VTK XML file of another data set type.
 VolumeFormat volume_format(std::span<const std::byte> head, const std::filesystem::path& name);
 // The same for a file on disk (its first KiB); a folder is a folder of TIFF
-// slices (vri/io/tiff.hpp). vri::FileError if it cannot be read.
+// slices (io/tiff.hpp). vri::FileError if it cannot be read.
 VolumeFormat volume_format(const std::filesystem::path& path);
 
 bool is_mesh(VolumeFormat format);

@@ -11,14 +11,14 @@
 #include <vector>
 
 #include "vri/camera/camera.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 #include "vri/render/renderer.hpp"
 
 namespace vri {
 
 struct Scene;
-class TableBuilder;        // vri/tables/table_builder.hpp
-class SecondOrderBuilder;  // vri/tables/second_order_table.hpp
+class TableBuilder;        // tables/table_builder.hpp
+class SecondOrderBuilder;  // tables/second_order_table.hpp
 
 enum class Backend { Cpu, Vulkan };
 

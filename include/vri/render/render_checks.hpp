@@ -7,10 +7,20 @@
 #include <string>
 
 #include "vri/camera/camera.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 #include "vri/scene/scene.hpp"
 
 namespace vri {
+
+// The bound on what early termination dropped in an image rendered with
+// threshold `termination` > 0: a ray stops only once T < termination, and its
+// pixel keeps alpha = 1 - T, so every pixel that may have stopped has
+// 1 - alpha < termination and lost at most its 1 - alpha (times the largest colour).
+struct TerminationBound {
+  long long pixels = 0;   // pixels with 1 - alpha < termination: those that may have stopped early
+  double max_remaining = 0;  // the largest 1 - alpha among them
+};
+TerminationBound termination_bound(const Image& image, double termination);
 
 // Most worker threads accepted (TBB crashes on absurd counts).
 inline constexpr int kMaxThreads = 1024;

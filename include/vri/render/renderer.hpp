@@ -9,7 +9,7 @@
 #include "vri/core/cancelled.hpp"
 #include "vri/core/error.hpp"
 #include "vri/integrators/integrator.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 
 namespace vri {
 

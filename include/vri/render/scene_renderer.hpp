@@ -12,7 +12,7 @@
 #include "vri/camera/camera.hpp"
 #include "vri/integrators/error_estimating_integrator.hpp"
 #include "vri/render/backend.hpp"
-#include "vri/render/image.hpp"
+#include "vri/image.hpp"
 #include "vri/render/renderer.hpp"
 #include "vri/scene/scene.hpp"
 

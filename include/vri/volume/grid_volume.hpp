@@ -25,7 +25,7 @@
 
 namespace vri {
 
-struct MacroRanges;  // vri/volume/macro_cells.hpp
+struct MacroRanges;  // volume/macro_cells.hpp
 
 class GridVolume {
  public:

@@ -1,0 +1,86 @@
+#include "vri/integrators/make_integrator.hpp"
+#include "methods/mesh_tables.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <string>
+
+#include "vri/core/error.hpp"
+#include "tables/table_builder.hpp"
+#include "tables/weighted_tables.hpp"
+#include "vri/methods.hpp"
+
+namespace vri {
+
+void check_volume_kind(const MethodSpec& spec, bool mesh) {
+  const MethodInfo& m = known_method(spec.name);
+  if (!mesh && !m.grid)
+    throw Error("method '" + spec.name + "' needs a tetrahedral mesh (volume {\"file\": \"x.vtk\"} or " +
+                "{\"builtin\": \"tetrahedralized\", ...})");
+  if (mesh && !m.mesh)
+    throw Error("method '" + spec.name + "' works on regular grids only; for a tetrahedral mesh use " +
+                method_names([](const MethodInfo& i) { return i.mesh; }, "or"));
+}
+
+void check_jitter(const MethodSpec& spec) {
+  if (spec.jitter && !known_method(spec.name).jitter)
+    throw Error(spec.name + ": jitter applies to " + method_names([](const MethodInfo& m) { return m.jitter; }) +
+                " only (the pre-integrated methods integrate between their "
+                "samples, so their rings are faint; exact and adaptive place no fixed samples)");
+}
+
+void check_termination(const MethodSpec& spec) {
+  if (spec.fast.termination != 0 && !known_method(spec.name).termination)
+    throw Error(spec.name + ": early ray termination is not supported yet; it works in " +
+                method_names([](const MethodInfo& m) { return m.termination; }));
+}
+
+std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
+                                            const TransferFunction& tf, const Lighting& lighting) {
+  check_volume_kind(spec, false);
+  check_termination(spec);
+  check_jitter(spec);
+  const MethodInfo& m = known_method(spec.name);
+  if (!m.make_grid) throw Error("method '" + spec.name + "' is in the method registry without a grid integrator");
+  return m.make_grid(spec, volume, tf, lighting);
+}
+
+std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
+                                            const TransferFunction& tf, const Lighting& lighting) {
+  check_volume_kind(spec, true);
+  const MethodInfo& m = known_method(spec.name);
+  if (!m.per_ray)
+    throw Error("method '" + spec.name + "' projects whole tetrahedra; it has no per-ray integrator");
+  check_jitter(spec);
+  if (spec.fast.termination != 0)
+    throw Error(spec.name + ": early ray termination is not supported on tetrahedral meshes yet");
+  if (!m.make_mesh) throw Error("method '" + spec.name + "' is in the method registry without a mesh integrator");
+  return m.make_mesh(spec, mesh, tf, lighting);
+}
+
+namespace {
+
+// The mesh's scalars, which its tables must cover (table_axis).
+std::optional<DataRange> scalar_range(const TetMesh& mesh) {
+  const auto [lo, hi] = std::minmax_element(mesh.scalars().begin(), mesh.scalars().end());
+  if (lo == mesh.scalars().end()) return std::nullopt;
+  return DataRange{*lo, *hi};
+}
+
+}  // namespace
+
+std::unique_ptr<SlabTable> make_slab_table(const MethodSpec& spec, const TetMesh& mesh, const TransferFunction& tf) {
+  const DiscreteTf discrete(tf, spec.table_size, scalar_range(mesh));
+  return std::make_unique<LengthTable>(
+      build_length_table(*make_table_builder(spec.builder), discrete, spec.length_samples, mesh.max_edge_length()));
+}
+
+std::unique_ptr<WeightedLengthTables> make_weighted_length_tables(const MethodSpec& spec, const TetMesh& mesh,
+                                                                  const TransferFunction& tf,
+                                                                  const Lighting& lighting) {
+  if (!lighting.enabled || lighting.mode != "interpolated") return nullptr;
+  return std::make_unique<WeightedLengthTables>(
+      build_weighted_length_tables(DiscreteTf(tf, spec.table_size, scalar_range(mesh)), spec.length_samples, mesh.max_edge_length()));
+}
+
+}  // namespace vri

@@ -1,0 +1,97 @@
+#include "vri/render/scene_renderer.hpp"
+
+#include <optional>
+#include <variant>
+
+#include "vri/core/error.hpp"
+#include "vri/integrators/make_integrator.hpp"
+#include "methods/mesh_tables.hpp"
+#include "vri/methods.hpp"
+#include "methods/projected/projected_tetrahedra.hpp"
+#include "render/error_estimate.hpp"
+#include "vri/render/render_checks.hpp"
+
+namespace vri {
+
+struct SceneRenderer::Projected {
+  std::unique_ptr<SlabTable> table;
+  std::unique_ptr<WeightedLengthTables> weighted;  // lighting mode interpolated
+  std::optional<CylindricalTable> cylinder;        // pt-cylindrical
+  std::optional<WeightedCylindricalTables> weighted_cylinder;
+};
+
+namespace {
+
+const Scene& checked(const Scene& scene) {
+  check_method_parameters(scene.method);
+  return scene;
+}
+
+}  // namespace
+
+SceneRenderer::SceneRenderer(const Scene& scene, Backend backend) : scene_(checked(scene)), camera_(scene.camera) {
+  check_work(scene, camera_);  // before any table is built
+  const MethodSpec& m = scene.method;
+  if (backend == Backend::Vulkan) {
+    gpu_ = make_vulkan_scene_renderer(scene);
+    return;
+  }
+  if (known_method(m.name).per_ray) {
+    integrator_ = std::visit(
+        [&](const auto& volume) { return make_integrator(m, volume, scene.transfer_function, scene.lighting); },
+        scene.volume);
+    return;
+  }
+  check_volume_kind(m, std::holds_alternative<TetMesh>(scene.volume));
+  check_jitter(m);
+  check_termination(m);
+  projected_ = std::make_unique<Projected>();
+  Projected& p = *projected_;
+  p.table = make_slab_table(m, scene.mesh(), scene.transfer_function);
+  p.weighted = make_weighted_length_tables(m, scene.mesh(), scene.transfer_function, scene.lighting);
+  if (m.name == "pt-cylindrical") {
+    const int size = m.table_size, planes = m.planes > 0 ? m.planes : size;
+    p.cylinder.emplace(*p.table, size, planes);
+    if (p.weighted)
+      p.weighted_cylinder.emplace(CylindricalTable(p.weighted->front, size, planes),
+                                  CylindricalTable(p.weighted->back, size, planes));
+  }
+}
+
+SceneRenderer::~SceneRenderer() = default;
+
+std::string SceneRenderer::method_name() const {
+  return integrator_ ? std::string(integrator_->name()) : scene_.method.name;
+}
+
+std::string SceneRenderer::device_name() const { return gpu_ ? gpu_->device_name() : "cpu"; }
+
+Image SceneRenderer::render(const RenderOptions& options) const { return render(camera_, options); }
+
+Image SceneRenderer::render(const Camera& camera, const RenderOptions& options) const {
+  if (&camera != &camera_) check_work(scene_, camera);
+  const Projected* p = projected_.get();
+  const Image image =
+      gpu_          ? gpu_->render(camera, options)
+      : !p          ? vri::render(camera, *integrator_, options)
+      : p->cylinder ? render_projected(camera, scene_.mesh(), *p->cylinder, options, scene_.lighting,
+                                       p->weighted_cylinder ? &*p->weighted_cylinder : nullptr)
+                    : render_projected(camera, scene_.mesh(), *p->table, options, scene_.lighting, p->weighted.get());
+  refuse_non_finite(image, "the rendered image");
+  return image;
+}
+
+const ErrorEstimatingIntegrator& SceneRenderer::error_estimating(const std::string& what) const {
+  if (gpu_) throw Error(what + " is not on the GPU yet: use --backend cpu");
+  const auto* e = dynamic_cast<const ErrorEstimatingIntegrator*>(integrator_.get());
+  if (!e) throw Error(what + " needs method 'adaptive', not '" + scene_.method.name + "'");
+  return *e;
+}
+
+Image SceneRenderer::render_error_estimate(const RenderOptions& options) const {
+  const Image estimate = vri::render_error_estimate(camera_, error_estimating("the error estimate"), options);
+  refuse_non_finite(estimate, "the error estimate");
+  return estimate;
+}
+
+}  // namespace vri

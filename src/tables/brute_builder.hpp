@@ -1,0 +1,22 @@
+#pragma once
+// BruteBuilder: every entry integrated on its own, piece by piece
+// (slab_integral.hpp, control points inside a bin included), each piece's
+// colour integral int c tau T dt evaluated directly by 8-point Gauss-Legendre
+// on panels of optical depth <= 1/2 with T in closed form - a different formula from linear_piece, so
+// the builders check each other (`exact`, exact_builder.hpp, is the
+// reference). O(N^3) for N x N (Lum, Wilson & Ma 2004, §4.1).
+#include "tables/slab_rgba.hpp"
+#include "tables/table_builder.hpp"
+
+namespace vri {
+
+class BruteBuilder final : public TableBuilder {
+ public:
+  std::string_view name() const override { return "brute"; }
+  PreintegrationTable build(const DiscreteTf& tf, double length) const override;
+};
+
+// The forward piece of linear_piece, by direct quadrature (exposed for tests).
+SlabRgba quadrature_piece(const TfSample& p, const TfSample& q, double d);
+
+}  // namespace vri
