@@ -4,12 +4,13 @@
 #include <cmath>
 
 #include "vri/core/error.hpp"
+#include "vri/methods.hpp"
 #include "vri/volume/grid_part.hpp"
 
 namespace vri::distributed {
 
 int ghost_points(const MethodSpec& method) {
-  const bool sampled = method.name == "riemann" || method.name == "preint1" || method.name == "preint2";
+  const bool sampled = known_method(method.name).step_parameter == "step";
   const double piece = sampled ? 2 * method.step : 0;  // voxel units; the cell walks own whole cells
   return static_cast<int>(std::ceil(std::min(piece, 1e6))) + 3;
 }

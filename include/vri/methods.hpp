@@ -39,6 +39,10 @@ struct MethodInfo {
   bool distributed = false; // mpirun ... --distributed (grids, split at brick faces)
   bool termination = false; // early ray termination (method.termination)
   bool jitter = false;      // a jittered first sample (method.jitter)
+  // The parameter that sets how far apart it samples ("step" for the uniform
+  // marchers, "hmin" for adaptive's smallest step); empty for the methods
+  // that walk cells. The render's work cap and the bricks' ghost layers read it.
+  std::string_view step_parameter = {};
   // Its per-ray integrator on a grid and on a mesh, and its GPU renderer (on
   // what gpu_grid and gpu_mesh say; null in a build without Vulkan); null
   // where it has none. make_integrator and the Vulkan backend call them.

@@ -8,6 +8,7 @@
 
 #include "vri/core/error.hpp"
 #include "vri/core/printable.hpp"
+#include "vri/methods.hpp"
 
 namespace vri {
 
@@ -30,16 +31,9 @@ std::string g(double v) { return format_g(v); }
 // The step a method takes along a ray, in voxel units; 1 for methods that
 // step cell by cell (exact, preint2-dual) or that are not stepped at all.
 double step_of(const MethodSpec& m, const char** key) {
-  if (m.name == "riemann" || m.name == "preint1" || m.name == "preint2") {
-    *key = "step";
-    return m.step;
-  }
-  if (m.name == "adaptive") {
-    *key = "hmin";
-    return m.hmin;
-  }
-  *key = nullptr;
-  return 1.0;
+  const std::string_view parameter = known_method(m.name).step_parameter;
+  *key = parameter == "step" ? "step" : parameter == "hmin" ? "hmin" : nullptr;
+  return parameter == "step" ? m.step : parameter == "hmin" ? m.hmin : 1.0;
 }
 
 struct Bounds {

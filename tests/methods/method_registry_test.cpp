@@ -9,6 +9,8 @@
 #include "methods/method_registry_support.hpp"
 #include "vri/integrators/make_integrator.hpp"
 #include "vri/render/backend.hpp"  // vulkan_backend_built
+#include "vri/render/render_checks.hpp"  // check_work
+#include "vri/camera/camera.hpp"
 
 namespace vri {
 namespace {
@@ -84,6 +86,28 @@ TEST_P(EveryMethod, TakesTerminationAndJitterWhereItClaims) {
   if (!jitter.empty()) {
     EXPECT_NE(jitter.find("jitter applies to riemann only"), std::string::npos) << jitter;
   }
+}
+
+// The work cap counts samples by the parameter the registry names: a tiny
+// step over the cap is refused naming it; a cell walker is counted a
+// sample per voxel unit, whatever its step says.
+TEST_P(EveryMethod, WorkCapReadsTheStepParameterItNames) {
+  Scene scene = test::small_scene(method().grid, method());
+  scene.method.step = scene.method.hmin = 1e-3;
+  scene.method.h0 = scene.method.hmax = 1e-3;
+  scene.method.max_samples = 10;
+  std::string why;
+  try {
+    check_work(scene, Camera(scene.camera));
+  } catch (const Error& e) {
+    why = e.what();
+  }
+  ASSERT_NE(why, "");
+  const std::string named = "with method." + std::string(method().step_parameter) + " 0.001";
+  if (method().step_parameter.empty())
+    EXPECT_EQ(why.find("with method."), std::string::npos) << why;
+  else
+    EXPECT_NE(why.find(named), std::string::npos) << why;
 }
 
 std::vector<std::string> all_names() {
