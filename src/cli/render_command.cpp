@@ -89,7 +89,7 @@ int run_render(const RenderArgs& args) {
     throw Error("--trace '" + *args.trace + "' must end in .csv");
 
   // Every check comes before the first file is written.
-  const SceneRenderer renderer(scene, args.flags.parsed_backend());
+  const SceneRenderer renderer(scene, args.flags.parsed_backend(), threads);
   const Camera& camera = renderer.camera();
   const ErrorEstimatingIntegrator* estimating =
       args.error_estimate || args.trace ? &renderer.error_estimating(args.error_estimate ? "--error-estimate" : "--trace")

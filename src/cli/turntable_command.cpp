@@ -63,7 +63,7 @@ int run_turntable(const TurntableArgs& args) {
   const int threads = checked_threads(args.flags.threads);
 
   const Scene scene = args.flags.load(args.scene);
-  const SceneRenderer renderer(scene, args.flags.parsed_backend());  // the volume and tables, once
+  const SceneRenderer renderer(scene, args.flags.parsed_backend(), threads);  // the volume and tables, once
   std::unique_ptr<VideoWriter> writer;
   if (video) writer = std::make_unique<VideoWriter>(scene.camera.width, scene.camera.height, args.fps);
   std::vector<std::vector<std::byte>> pngs;

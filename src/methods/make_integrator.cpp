@@ -6,6 +6,7 @@
 #include <string>
 
 #include "vri/core/error.hpp"
+#include "vri/core/printable.hpp"  // format_g
 #include "tables/table_builder.hpp"
 #include "tables/weighted_tables.hpp"
 #include "vri/methods.hpp"
@@ -70,9 +71,19 @@ std::optional<DataRange> scalar_range(const TetMesh& mesh) {
 }  // namespace
 
 std::unique_ptr<SlabTable> make_slab_table(const MethodSpec& spec, const TetMesh& mesh, const TransferFunction& tf) {
+  const auto builder = make_table_builder(spec.builder);
+  // Before anything is built (issue 47): a builder of O(n^3) work, one table
+  // per length, runs for minutes at sizes that fit in memory.
+  const double work = builder->work(spec.table_size) * (spec.length_samples - 1);
+  if (work > spec.max_work)
+    throw Error("'" + spec.name + "': the (l, s_f, s_b) table by builder '" + std::string(builder->name()) +
+                "' takes about " + format_g(work) + " evaluations (" + std::to_string(spec.length_samples - 1) +
+                " lengths of " + std::to_string(spec.table_size) + "^2 entries), over the cap of " +
+                format_g(spec.max_work) + "; raise it with --max-work N (scene method.max_work), or use a smaller "
+                "table_size or length_samples, or builder incremental");
   const DiscreteTf discrete(tf, spec.table_size, scalar_range(mesh));
   return std::make_unique<LengthTable>(
-      build_length_table(*make_table_builder(spec.builder), discrete, spec.length_samples, mesh.max_edge_length()));
+      build_length_table(*builder, discrete, spec.length_samples, mesh.max_edge_length()));
 }
 
 std::unique_ptr<WeightedLengthTables> make_weighted_length_tables(const MethodSpec& spec, const TetMesh& mesh,

@@ -1,5 +1,7 @@
 #include "vri/render/scene_renderer.hpp"
 
+#include <tbb/task_arena.h>
+
 #include <optional>
 #include <variant>
 
@@ -29,8 +31,22 @@ const Scene& checked(const Scene& scene) {
 
 }  // namespace
 
-SceneRenderer::SceneRenderer(const Scene& scene, Backend backend) : scene_(checked(scene)), camera_(scene.camera) {
+SceneRenderer::SceneRenderer(const Scene& scene, Backend backend, int threads)
+    : scene_(checked(scene)), camera_(scene.camera) {
   check_work(scene, camera_);  // before any table is built
+  // The tables' builds run on as many threads as the render (--threads). Not
+  // by default: work in another arena leaves the TBB group that cancels it
+  // (Cancellation: the viewer's and Python's builds stay cancellable).
+  if (threads <= 0) {
+    prepare(backend);
+    return;
+  }
+  tbb::task_arena arena(threads);
+  arena.execute([&] { prepare(backend); });
+}
+
+void SceneRenderer::prepare(Backend backend) {
+  const Scene& scene = scene_;
   const MethodSpec& m = scene.method;
   if (backend == Backend::Vulkan) {
     gpu_ = make_vulkan_scene_renderer(scene);

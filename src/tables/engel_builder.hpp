@@ -14,6 +14,8 @@ namespace vri {
 class EngelBuilder final : public TableBuilder {
  public:
   std::string_view name() const override { return "engel"; }
+  // O(n^2): each entry from the integral functions.
+  double work(int n) const override { return 4.0 * n * n; }
   PreintegrationTable build(const DiscreteTf& tf, double length) const override;
 };
 

@@ -15,6 +15,8 @@ namespace vri {
 class IncrementalBuilder final : public TableBuilder {
  public:
   std::string_view name() const override { return "incremental"; }
+  // O(n^2): each entry from its neighbours (Lum, Wilson & Ma 2004).
+  double work(int n) const override { return 4.0 * n * n; }
   PreintegrationTable build(const DiscreteTf& tf, double length) const override;
 };
 

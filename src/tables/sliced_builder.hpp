@@ -32,6 +32,8 @@ class SlicedBuilder final : public TableBuilder {
   // steps = 0: 2 N steps. Throws vri::Error unless 0 <= steps <= 1 << 20.
   explicit SlicedBuilder(int steps = 0, Accumulation accumulation = Accumulation::Single);
   std::string_view name() const override { return "sliced"; }
+  // n^2 entries, each stepped through its slices (steps, or 2n).
+  double work(int n) const override { return double(steps_ > 0 ? steps_ : 2 * n) * n * n; }
   PreintegrationTable build(const DiscreteTf& tf, double length) const override;
 
  private:

@@ -22,6 +22,10 @@ class TableBuilder {
   virtual std::string_view name() const = 0;
   // The (N, N) table for slabs of `length` world units (> 0).
   virtual PreintegrationTable build(const DiscreteTf& tf, double length) const = 0;
+  // About how many integrand evaluations one build of an N-entry table
+  // takes, in the units of --max-work (one ray sample is one): the mesh
+  // methods build one table per length and check the sum before building.
+  virtual double work(int n) const = 0;
 };
 
 // Throws vri::Error unless length is finite and > 0; every build() calls it.

@@ -26,6 +26,7 @@ class VulkanSlicedBuilder final : public TableBuilder {
   // steps = 0: 2 N steps. Throws vri::Error unless 0 <= steps <= 1 << 20.
   VulkanSlicedBuilder(std::shared_ptr<const VulkanDevice> device, int steps);
   std::string_view name() const override { return "sliced"; }
+  double work(int n) const override { return double(steps_ > 0 ? steps_ : 2 * n) * n * n; }  // as SlicedBuilder
   PreintegrationTable build(const DiscreteTf& tf, double length) const override;
 
  private:
@@ -38,6 +39,7 @@ class VulkanIncrementalBuilder final : public TableBuilder {
  public:
   explicit VulkanIncrementalBuilder(std::shared_ptr<const VulkanDevice> device);
   std::string_view name() const override { return "incremental"; }
+  double work(int n) const override { return 4.0 * n * n; }  // as IncrementalBuilder
   // vri::Error when its scratch ((N-1)^2 entries, six times) exceeds a storage buffer.
   PreintegrationTable build(const DiscreteTf& tf, double length) const override;
 

@@ -22,7 +22,10 @@ class SceneRenderer {
  public:
   // Throws vri::Error for bad parameters, work over the caps or a method the
   // volume does not support. Refers to `scene`: keep it alive and unchanged.
-  explicit SceneRenderer(const Scene& scene, Backend backend = Backend::Cpu);
+  // The tables are built on `threads` threads (0: every core, and a
+  // Cancellation around the constructor can stop the build; with threads > 0
+  // it cannot: the build runs in its own TBB arena).
+  explicit SceneRenderer(const Scene& scene, Backend backend = Backend::Cpu, int threads = 0);
   ~SceneRenderer();
   SceneRenderer(const SceneRenderer&) = delete;
   SceneRenderer& operator=(const SceneRenderer&) = delete;
@@ -48,6 +51,7 @@ class SceneRenderer {
   Image render_error_estimate(const RenderOptions& options = {}) const;
 
  private:
+  void prepare(Backend backend);  // the integrator, projected tables or GPU renderer
   struct Projected;  // pt, pt-cylindrical: tables over the mesh
   const Scene& scene_;
   Camera camera_;

@@ -12,6 +12,9 @@
 #include "io/vtk_legacy.hpp"
 #include "tables/length_table_support.hpp"
 #include "vri/render/renderer.hpp"
+#include "vri/render/scene_renderer.hpp"
+#include "vri/scene/scene.hpp"
+#include "test_support.hpp"
 #include "tables/incremental_builder.hpp"
 #include "tables/weighted_tables.hpp"
 
@@ -201,6 +204,34 @@ TEST(TetRaycastLighting, InterpolatedSameBytesWithAnyThreadCount) {
 TEST(TetRaycast, RefusesATableTooShortForTheMesh) {
   const TetMesh mesh = test::unit_tet();
   EXPECT_THROW(TetRaycastIntegrator(mesh, test::length_table_ptr(tf(), 8, 4, 1.0)), Error);
+}
+
+// The (l, s_f, s_b) table is one build per length: a builder of O(n^3) work
+// at a size that fits in memory ran for minutes (issue 47). Its work is
+// checked against --max-work before anything is built, for every mesh
+// method that looks the table up; under the cap it renders.
+TEST(TetRaycast, TableWorkOverTheCapIsRefusedBeforeBuilding) {
+  for (const char* method : {"tet-raycast", "pt", "pt-cylindrical"}) {
+    SCOPED_TRACE(method);
+    Scene scene = load_scene(test::source_path("scenes/blunt_fin.json"));
+    scene.camera.width = scene.camera.height = 8;
+    scene.method.name = method;
+    scene.method.builder = "brute";
+    scene.method.table_size = 256;
+    scene.method.length_samples = 64;
+    scene.method.max_work = 1e9;  // brute: 63 x 8 x 256^2 x 86 = 2.8e9
+    try {
+      const SceneRenderer renderer(scene);
+      FAIL() << "built a table of about 2.8e9 evaluations under a cap of 1e9";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("builder 'brute' takes about 2.84059e+09 evaluations (63 lengths of 256^2 entries)"), std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("--max-work"), std::string::npos) << e.what();
+    }
+    scene.method.table_size = 16;  // 63 x 8 x 16^2 x 6 = 7.7e5: builds
+    scene.method.length_samples = 8;
+    EXPECT_NO_THROW(SceneRenderer(scene, Backend::Cpu, 1).render(RenderOptions{.threads = 1}));
+  }
 }
 
 }  // namespace
