@@ -36,6 +36,11 @@ void check_termination(const MethodSpec& spec) {
                 method_names([](const MethodInfo& m) { return m.termination; }));
 }
 
+void check_mesh_termination(const MethodSpec& spec) {
+  if (spec.fast.termination != 0)
+    throw Error(spec.name + ": early ray termination is not supported on tetrahedral meshes yet");
+}
+
 std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
                                             const TransferFunction& tf, const Lighting& lighting) {
   check_volume_kind(spec, false);
@@ -53,8 +58,7 @@ std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMes
   if (!m.per_ray)
     throw Error("method '" + spec.name + "' projects whole tetrahedra; it has no per-ray integrator");
   check_jitter(spec);
-  if (spec.fast.termination != 0)
-    throw Error(spec.name + ": early ray termination is not supported on tetrahedral meshes yet");
+  check_mesh_termination(spec);
   if (!m.make_mesh) throw Error("method '" + spec.name + "' is in the method registry without a mesh integrator");
   return m.make_mesh(spec, mesh, tf, lighting);
 }

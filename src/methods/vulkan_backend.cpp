@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "vri/core/error.hpp"
+#include "vri/integrators/make_integrator.hpp"  // check_mesh_termination
 #include "vri/methods.hpp"
 #include "vri/render/backend.hpp"
 #include "vri/scene/scene.hpp"
@@ -28,8 +29,7 @@ std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene)
     if (!info.gpu_mesh)
       throw Error("--backend vulkan: method '" + m + "' on tetrahedral meshes is not on the GPU yet; " +
                   method_names([](const MethodInfo& i) { return i.gpu_mesh; }) + " is (docs/GPU.md)");
-    if (scene.method.fast.termination != 0)  // as make_integrator on the CPU
-      throw Error(m + ": early ray termination is not supported on tetrahedral meshes yet");
+    check_mesh_termination(scene.method);  // as make_integrator on the CPU
   }
   if (!info.make_gpu) throw Error("method '" + m + "' is in the method registry without a GPU renderer");
   return info.make_gpu(scene);

@@ -22,6 +22,9 @@ void check_jitter(const MethodSpec& spec);
 
 // vri::Error if `spec` asks for early ray termination of a method without it.
 void check_termination(const MethodSpec& spec);
+// vri::Error if `spec` asks for early ray termination on a tetrahedral mesh
+// (no mesh method has it yet), on the CPU or the GPU.
+void check_mesh_termination(const MethodSpec& spec);
 
 // Throws vri::Error for an unknown method (vri/methods.hpp), one that does
 // not render this kind of volume, or bad parameters. The integrator refers to `volume` and `tf`: keep them alive.
