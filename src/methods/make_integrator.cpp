@@ -78,14 +78,14 @@ std::unique_ptr<SlabTable> make_slab_table(const MethodSpec& spec, const TetMesh
   const auto builder = make_table_builder(spec.builder);
   // Before anything is built (issue 47): a builder of O(n^3) work, one table
   // per length, runs for minutes at sizes that fit in memory.
-  const double work = builder->work(spec.table_size) * (spec.length_samples - 1);
+  const DiscreteTf discrete(tf, spec.table_size, scalar_range(mesh));
+  const double work = builder->length_table_work(discrete, spec.length_samples, mesh.max_edge_length());
   if (work > spec.max_work)
     throw Error("'" + spec.name + "': the (l, s_f, s_b) table by builder '" + std::string(builder->name()) +
                 "' takes about " + format_g(work) + " evaluations (" + std::to_string(spec.length_samples - 1) +
                 " lengths of " + std::to_string(spec.table_size) + "^2 entries), over the cap of " +
                 format_g(spec.max_work) + "; raise it with --max-work N (scene method.max_work), or use a smaller "
                 "table_size or length_samples, or builder incremental");
-  const DiscreteTf discrete(tf, spec.table_size, scalar_range(mesh));
   return std::make_unique<LengthTable>(
       build_length_table(*builder, discrete, spec.length_samples, mesh.max_edge_length()));
 }

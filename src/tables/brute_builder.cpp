@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "tables/slab_integral.hpp"
 
@@ -38,6 +39,35 @@ SlabRgba quadrature_piece(const TfSample& p, const TfSample& q, double d) {
   }
   const double h = 0.5 * w;
   return {C[0] * h, C[1] * h, C[2] * h, -std::expm1(-(A + B) / 2)};
+}
+
+double BruteBuilder::length_table_work(const DiscreteTf& tf, int lengths, double max_length) const {
+  const int n = tf.size();
+  // Prefix sums over the bins of the largest tau in each and of its pieces.
+  std::vector<double> tau_sum(n, 0.0), pieces_sum(n, 0.0);
+  for (int k = 0; k + 1 < n; ++k) {
+    double tau = std::max(tf[k].tau, tf[k + 1].tau);
+    for (const SubPiece& s : tf.sub_pieces(k)) tau = std::max({tau, s.p.tau, s.q.tau});
+    const double pieces = std::max<double>(1, double(tf.sub_pieces(k).size()));
+    tau_sum[k + 1] = tau_sum[k] + (std::isfinite(tau) ? tau : 1e300);
+    pieces_sum[k + 1] = pieces_sum[k] + pieces;
+  }
+  // Entry (f, b) of the slice of length l = m c crosses g = |b - f| bins in p
+  // pieces of total depth at most m c T / g (T: the bins' tau); piece i takes
+  // min(4 d_i + 1, 201) panels, so the entry at most min(4 D + p, 201 p);
+  // summed over m = 1 .. M - 1 in closed form. The diagonal is closed form.
+  const double M1 = lengths - 1, c = max_length / M1;
+  double work = 0;
+  for (int f = 0; f < n; ++f)
+    for (int b = 0; b < n; ++b) {
+      if (f == b) continue;
+      const int lo = std::min(f, b), hi = std::max(f, b);
+      const double p = pieces_sum[hi] - pieces_sum[lo];
+      const double depth_per_m = c * (tau_sum[hi] - tau_sum[lo]) / (hi - lo);  // D at m = 1
+      const double k = depth_per_m > 0 ? std::min(M1, std::floor(50 * p / depth_per_m)) : M1;
+      work += p * k + 2 * depth_per_m * k * (k + 1) + (M1 - k) * 201 * p;
+    }
+  return 8 * work + M1 * n;
 }
 
 PreintegrationTable BruteBuilder::build(const DiscreteTf& tf, double length) const {

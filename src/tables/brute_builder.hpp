@@ -15,6 +15,10 @@ class BruteBuilder final : public TableBuilder {
   std::string_view name() const override { return "brute"; }
   // n^2 entries of (n + 2) / 3 bins on average, 8 Gauss-Legendre points a bin.
   double work(int n) const override { return 8.0 * n * n * (n + 2) / 3; }
+  // Counts the panels too: a piece of optical depth d takes up to
+  // min(4 d + 1, 201) of them (quadrature_piece), so one tetrahedron at
+  // coordinates 3e38 costs 200 times an ordinary one (issue 47, item 8).
+  double length_table_work(const DiscreteTf& tf, int lengths, double max_length) const override;
   PreintegrationTable build(const DiscreteTf& tf, double length) const override;
 };
 

@@ -26,6 +26,13 @@ class TableBuilder {
   // takes, in the units of --max-work (one ray sample is one): the mesh
   // methods build one table per length and check the sum before building.
   virtual double work(int n) const = 0;
+  // The same for the lengths - 1 non-empty slices of a length table
+  // (build_length_table): work(n) each, unless a builder's work grows with
+  // the slabs' optical depth, as brute's quadrature panels do.
+  virtual double length_table_work(const DiscreteTf& tf, int lengths, double max_length) const {
+    (void)max_length;
+    return work(tf.size()) * (lengths - 1);
+  }
 };
 
 // Throws vri::Error unless length is finite and > 0; every build() calls it.

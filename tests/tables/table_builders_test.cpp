@@ -135,6 +135,25 @@ TEST(TableBuilders, HugeExtinctionGivesTheOpaqueSlabLimit) {
   }
 }
 
+// brute's quadrature takes up to 201 panels a piece where a slab is deep
+// (issue 47, item 8: one tetrahedron at coordinates 3e38 ran for minutes under
+// a cap its estimate of 8 evaluations a bin passed); the other builders' work
+// does not depend on the depth.
+TEST(TableBuilders, BruteWorkCountsThePanelsOfDeepSlabs) {
+  const DiscreteTf tf(TransferFunction({{0, 0.9, 0.2, 0.1, 0}, {10, 0.1, 0.5, 0.7, 1.0}}), 32);
+  const BruteBuilder brute;
+  const double plain = brute.work(32) * 8;  // 9 lengths: 8 non-empty slices
+  const double shallow = brute.length_table_work(tf, 9, 1e-3), deep = brute.length_table_work(tf, 9, 3e38);
+  EXPECT_GT(shallow, 0.9 * plain);
+  EXPECT_LT(shallow, 1.1 * plain);
+  EXPECT_GT(deep, 150 * plain);  // depth ~1e38 a piece: 201 panels of 8 points, where one did
+  EXPECT_LT(deep, 210 * plain);
+  for (const char* name : {"incremental", "sliced", "engel", "exact"}) {
+    const auto builder = make_table_builder(name);
+    EXPECT_EQ(builder->length_table_work(tf, 9, 3e38), builder->work(32) * 8) << name;
+  }
+}
+
 TEST(TableBuilders, SameBytesForAnyThreadCount) {
   const DiscreteTf tf(test::random_spiky_tf(17, 2.0), 100);
   for (const char* name : {"brute", "incremental", "sliced", "engel"}) {
