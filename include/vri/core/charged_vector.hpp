@@ -2,8 +2,9 @@
 // ChargedVector<T>: a std::vector whose storage is charged to the process's
 // memory budget (vri/core/memory_limit.hpp) while it is held - for the
 // temporary arrays a reader builds while it parses a file (the file's bytes,
-// its values as doubles, its indices), which together can pass the budget
-// though each was checked alone (issue 47).
+// its values as doubles, its indices) and a renderer's working arrays (the
+// projected tetrahedra's tile lists and fragments), which together can pass
+// the budget though each was checked alone (issue 47).
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -22,7 +23,7 @@ struct ChargedAllocator {
 
   T* allocate(std::size_t n) {
     const std::uint64_t bytes = bytes_of(n);
-    charge_process_bytes(bytes, "a temporary array of " + std::to_string(n) + " values while reading");
+    charge_process_bytes(bytes, "a working array of " + std::to_string(n) + " values");
     try {
       return std::allocator<T>().allocate(n);
     } catch (...) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "vri/core/charged_vector.hpp"
 #include "vri/core/error.hpp"
 #include "classify.hpp"
 #include "shading/chord_lighting.hpp"
@@ -68,12 +69,12 @@ class TileRaster {
   using CylinderTables = std::array<const CylindricalTable*, 3>;
   // Exactly one of slab[0] and cylinder[0] is given. lighting: null when unlit.
   TileRaster(const Camera& cam, const TetMesh& mesh, SlabTables slab, CylinderTables cylinder,
-             const std::vector<Screen>& screen, Vec3 view, bool perspective, const ChordLighting* lighting,
+             const ChargedVector<Screen>& screen, Vec3 view, bool perspective, const ChordLighting* lighting,
              PtReconstruction reconstruction)
       : cam_(cam), mesh_(mesh), slab_(slab), cylinder_(cylinder), screen_(screen), view_(view),
         perspective_(perspective), lighting_(lighting), per_vertex_(reconstruction == PtReconstruction::PerVertex) {}
 
-  void draw(std::int32_t tet, int x0, int y0, int x1, int y1, std::vector<Fragment>& out) const {
+  void draw(std::int32_t tet, int x0, int y0, int x1, int y1, ChargedVector<Fragment>& out) const {
     const auto& v = mesh_.tets()[tet];
     const auto& P = mesh_.points();
     const auto& S = mesh_.scalars();
@@ -147,7 +148,7 @@ class TileRaster {
   double weight_of(double d) const { return perspective_ && !per_vertex_ ? d : 1.0; }
 
   void triangle(std::int32_t tet, double alpha, double centre, const Vertex& a, const Vertex& b, const Vertex& c, int x0, int y0, int x1, int y1,
-                std::vector<Fragment>& out) const {
+                ChargedVector<Fragment>& out) const {
     const double area = edge(a.xy, b.xy, c.xy);
     if (area == 0) return;
     const double sign = area > 0 ? 1 : -1;
@@ -193,7 +194,7 @@ class TileRaster {
   const TetMesh& mesh_;
   SlabTables slab_;
   CylinderTables cylinder_;
-  const std::vector<Screen>& screen_;
+  const ChargedVector<Screen>& screen_;
   Vec3 view_;
   bool perspective_;
   const ChordLighting* lighting_;
@@ -223,8 +224,11 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, TileRaster::S
   Image image(W, H);
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    // Every point projected once.
-    std::vector<Screen> screen(mesh.points().size());
+    // Every point projected once. This and the tile lists below grow with
+    // the mesh and the image, so they are charged to --max-memory as they
+    // are allocated (issue 47): a million tetrahedra each over thousands of
+    // tiles is refused, not tried.
+    ChargedVector<Screen> screen(mesh.points().size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, screen.size()), [&](const auto& r) {
       for (std::size_t i = r.begin(); i != r.end(); ++i) {
         const Vec3 p = mesh.points()[i];
@@ -233,36 +237,52 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, TileRaster::S
         screen[i] = {xy ? Point2{xy->first, xy->second} : Point2{0, 0}, d, xy.has_value() && d > 0};
       }
     });
-    // Tetrahedra binned to the tiles their projection's bounding box touches, in index order.
-    std::vector<std::vector<std::int32_t>> bins(std::size_t(tiles_x) * tiles_y);
-    for (std::size_t t = 0; t < mesh.size(); ++t) {
+    // The tiles a tetrahedron's projected bounding box touches; false when it is not drawn.
+    const auto tiles_of = [&](std::size_t t, int& tx0, int& tx1, int& ty0, int& ty1) {
       double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-      bool ok = true;
       for (int k = 0; k < 4; ++k) {
         const Screen& s = screen[mesh.tets()[t][k]];
-        ok = ok && s.ok;
+        if (!s.ok) return false;
         lo[0] = std::min(lo[0], s.xy.x);
         hi[0] = std::max(hi[0], s.xy.x);
         lo[1] = std::min(lo[1], s.xy.y);
         hi[1] = std::max(hi[1], s.xy.y);
       }
-      if (!ok || hi[0] < 0 || hi[1] < 0 || lo[0] > W || lo[1] > H) continue;
-      const int tx0 = floor_within(lo[0] - 0.5, 0, W - 1) / ts, tx1 = floor_within(hi[0] + 0.5, 0, W - 1) / ts;
-      const int ty0 = floor_within(lo[1] - 0.5, 0, H - 1) / ts, ty1 = floor_within(hi[1] + 0.5, 0, H - 1) / ts;
-      for (int ty = ty0; ty <= ty1; ++ty)
-        for (int tx = tx0; tx <= tx1; ++tx) bins[std::size_t(ty) * tiles_x + tx].push_back(std::int32_t(t));
+      if (hi[0] < 0 || hi[1] < 0 || lo[0] > W || lo[1] > H) return false;
+      tx0 = floor_within(lo[0] - 0.5, 0, W - 1) / ts, tx1 = floor_within(hi[0] + 0.5, 0, W - 1) / ts;
+      ty0 = floor_within(lo[1] - 0.5, 0, H - 1) / ts, ty1 = floor_within(hi[1] + 0.5, 0, H - 1) / ts;
+      return true;
+    };
+    // Tetrahedra binned to their tiles, in index order: counted, then filled
+    // (tile k's are bin_items[bin_start[k] .. bin_start[k + 1])).
+    ChargedVector<std::size_t> bin_start(std::size_t(tiles_x) * tiles_y + 1, 0);
+    int tx0, tx1, ty0, ty1;
+    for (std::size_t t = 0; t < mesh.size(); ++t)
+      if (tiles_of(t, tx0, tx1, ty0, ty1))
+        for (int ty = ty0; ty <= ty1; ++ty)
+          for (int tx = tx0; tx <= tx1; ++tx) ++bin_start[std::size_t(ty) * tiles_x + tx + 1];
+    for (std::size_t k = 1; k < bin_start.size(); ++k) bin_start[k] += bin_start[k - 1];
+    ChargedVector<std::int32_t> bin_items(bin_start.back());
+    {
+      ChargedVector<std::size_t> fill(bin_start.begin(), bin_start.end() - 1);
+      for (std::size_t t = 0; t < mesh.size(); ++t)
+        if (tiles_of(t, tx0, tx1, ty0, ty1))
+          for (int ty = ty0; ty <= ty1; ++ty)
+            for (int tx = tx0; tx <= tx1; ++tx) bin_items[fill[std::size_t(ty) * tiles_x + tx]++] = std::int32_t(t);
     }
     const TileRaster raster(camera, mesh, slab, cylinder, screen, view, perspective, lit ? &*lit : nullptr,
                             reconstruction);
     tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const tbb::blocked_range<int>& r) {
-      std::vector<Fragment> frags, by_pixel;
-      std::vector<std::size_t> start;
+      // A tile's fragments: as many as its depth complexity, charged too.
+      ChargedVector<Fragment> frags, by_pixel;
+      ChargedVector<std::size_t> start;
       for (int tile = r.begin(); tile != r.end(); ++tile) {
         if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;
         const int x0 = (tile % tiles_x) * ts, y0 = (tile / tiles_x) * ts;
         const int x1 = std::min(W, x0 + ts), y1 = std::min(H, y0 + ts), tw = x1 - x0;
         frags.clear();
-        for (const std::int32_t t : bins[tile]) raster.draw(t, x0, y0, x1, y1, frags);
+        for (std::size_t i = bin_start[tile]; i < bin_start[tile + 1]; ++i)
+          raster.draw(bin_items[i], x0, y0, x1, y1, frags);
         // Bucket by pixel (counting sort), then order each pixel's few fragments by depth.
         auto local = [&](const Fragment& f) { return std::size_t((f.pixel / W - y0) * tw + f.pixel % W - x0); };
         start.assign(std::size_t(tw) * (y1 - y0) + 1, 0);
@@ -270,7 +290,7 @@ Image render_tetrahedra(const Camera& camera, const TetMesh& mesh, TileRaster::S
         for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
         by_pixel.resize(frags.size());
         {
-          std::vector<std::size_t> next(start.begin(), start.end() - 1);
+          ChargedVector<std::size_t> next(start.begin(), start.end() - 1);
           for (const Fragment& f : frags) by_pixel[next[local(f)]++] = f;
         }
         for (std::size_t p = 0; p + 1 < start.size(); ++p) {

@@ -7,6 +7,7 @@
 
 #include "mesh/mesh_test_support.hpp"
 #include "vri/core/error.hpp"
+#include "vri/core/memory_limit.hpp"
 #include "methods/exact/mesh_exact.hpp"
 #include "methods/tet_raycast/tet_raycast.hpp"
 #include "io/vtk_legacy.hpp"
@@ -228,6 +229,36 @@ TEST(ProjectedTetrahedra, CylindricalPlanesApproachPt) {
   const double coarse = error(32, 16), fine = error(128, 128);
   EXPECT_LT(coarse, 0.05);
   EXPECT_LT(fine, 0.5 * coarse);
+}
+
+// The projected points, the tile lists and each tile's fragments grow with
+// the mesh, the image and the depth complexity: they are charged to
+// --max-memory as they are allocated (issue 47), so a render over the budget
+// is refused with the flag named, and one within it gives the same bytes.
+TEST(ProjectedTetrahedra, WorkingArraysAreChargedToTheMemoryBudget) {
+  const TetMesh mesh = test::carved_mesh(6, wave, [](double x, double y, double) { return x < 2 || y > 3; });
+  const LengthTable table = test::length_table(tf(), 32, 8, mesh.max_edge_length());
+  CameraSpec cs = view({-6, -5, 9}, {2.5, 2.5, 2.5}, false);
+  cs.width = cs.height = 24;
+  const Camera cam(cs);
+  const Image free = render_projected(cam, mesh, table, {.threads = 1});
+  struct Restore {
+    ~Restore() { set_memory_limit(0); }
+  } restore;
+  const std::uint64_t image = free.data().size() * sizeof(float);  // charged as any image
+  set_memory_limit(memory_in_use() + image + 2048);  // the 216 projected points alone take 6.75 KiB
+  try {
+    render_projected(cam, mesh, table, {.threads = 1});
+    FAIL() << "the working arrays were not charged";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("a working array of 216 values"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--max-memory"), std::string::npos) << e.what();
+  }
+  const std::uint64_t before = memory_in_use();
+  set_memory_limit(before + (16 << 20));
+  const Image within = render_projected(cam, mesh, table, {.threads = 1, .tile_size = 4});
+  EXPECT_EQ(memory_in_use(), before + image);  // all given back but the image
+  ASSERT_EQ(0, std::memcmp(free.data().data(), within.data().data(), free.data().size() * sizeof(float)));
 }
 
 TEST(ProjectedTetrahedra, RefusesATableTooShortForTheMesh) {
