@@ -9,8 +9,8 @@
 #include "methods/adaptive/adaptive_guaranteed.hpp"
 #include "methods/adaptive/adaptive_simpson.hpp"
 #include "methods/riemann/riemann.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace {
 

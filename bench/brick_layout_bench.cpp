@@ -26,8 +26,8 @@
 #include <memory>
 #include <vector>
 
-#include "vri/camera/camera.hpp"
-#include "vri/core/ray.hpp"
+#include "vri/camera.hpp"
+#include "vri/geometry.hpp"
 
 namespace {
 

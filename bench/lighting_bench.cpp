@@ -8,9 +8,9 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
-#include "vri/integrators/make_integrator.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/methods.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "tables/incremental_builder.hpp"
 #include "tables/weighted_tables.hpp"
 

@@ -18,8 +18,8 @@
 #include <map>
 #include <memory>
 
-#include "vri/integrators/make_integrator.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/methods.hpp"
+#include "vri/scene.hpp"
 #include "tables/table_builder.hpp"
 #include "tables/zero_opacity.hpp"
 #include "volume/builtin_volumes.hpp"

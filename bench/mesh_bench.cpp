@@ -3,11 +3,11 @@
 // Run: ./build/bench/bench_mesh --benchmark_min_time=1 (figures: docs/PERFORMANCE.md)
 #include <benchmark/benchmark.h>
 
-#include "vri/integrators/make_integrator.hpp"
+#include "vri/methods.hpp"
 #include "methods/mesh_tables.hpp"
 #include "methods/projected/projected_tetrahedra.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "tables/cylindrical_table.hpp"
 
 namespace {

@@ -17,9 +17,9 @@
 #include <memory>
 #include <string>
 
-#include "vri/integrators/make_integrator.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/methods.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace {
 

@@ -6,8 +6,8 @@
 
 #include "methods/exact/exact.hpp"
 #include "methods/riemann/riemann.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace {
 

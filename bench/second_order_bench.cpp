@@ -14,7 +14,7 @@
 #include <cmath>
 #include <string>
 
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 #include "tables/half_second_order_table.hpp"
 #include "tables/second_order_table.hpp"
 #include "tables/second_order_weighted.hpp"

@@ -12,7 +12,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 #include "tables/slab_integral.hpp"
 #include "tables/table_builder.hpp"
 

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "vri/methods.hpp"
-#include "vri/volume/grid_part.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::distributed {
 

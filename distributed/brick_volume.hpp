@@ -4,9 +4,8 @@
 // is a brick (GridVolume::Brick), so every method integrates exactly the
 // pieces of each ray that start in the brick, on the whole ray's samples.
 #include "kd_bricks.hpp"
-#include "vri/integrators/method_spec.hpp"
-#include "vri/volume/grid_part.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/methods.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::distributed {
 

@@ -10,9 +10,9 @@
 #include "brick_volume.hpp"
 #include "icet_compositor.hpp"
 #include "kd_bricks.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "vri/methods.hpp"
-#include "vri/render/scene_renderer.hpp"
+#include "vri/render.hpp"
 
 namespace vri::distributed {
 

@@ -11,8 +11,8 @@
 
 #include "mpi_world.hpp"
 #include "vri/image.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::distributed {
 

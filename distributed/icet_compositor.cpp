@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::distributed {
 

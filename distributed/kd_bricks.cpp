@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::distributed {
 

@@ -7,8 +7,8 @@
 #include <array>
 #include <vector>
 
-#include "vri/camera/camera.hpp"
-#include "vri/core/vec3.hpp"
+#include "vri/camera.hpp"
+#include "vri/geometry.hpp"
 
 namespace vri::distributed {
 

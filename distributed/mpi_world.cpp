@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::distributed {
 

@@ -14,7 +14,7 @@
 #include <mpi.h>
 
 #include "rank_watchdog.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::distributed {
 

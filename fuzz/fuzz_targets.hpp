@@ -18,18 +18,17 @@
 #include <string_view>
 
 #include "io/gzip.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
 #include "io/metaimage.hpp"
-#include "vri/io/npy.hpp"
+#include "vri/io.hpp"
 #include "io/nrrd.hpp"
-#include "vri/io/raw_volume.hpp"
 #include "io/tiff.hpp"
 #include "io/volvis_dat.hpp"
 #include "io/vti.hpp"
 #include "io/vtk_legacy.hpp"
 #include "io/vtu.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 #include "transfer/paraview_colormap.hpp"
 
 namespace vri::fuzz {

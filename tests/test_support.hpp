@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "vri/core/ray.hpp"
+#include "vri/geometry.hpp"
 #include "vri/image.hpp"
-#include "vri/transfer/transfer_function.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/transfer_function.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::test {
 

@@ -6,9 +6,9 @@ the method folders as one wing, an arrow A -> B where a file of A includes a
 file of B) and OUT_DIR/layers.md (the counts, and any arrow that closes a
 loop between folders, which a layered house has none of).
 
-A folder is a room: src/<concept>/ with its public headers include/vri/<concept>/
-(include/vri/integrators/ and methods.hpp, the methods' public face, are the
-room `integrators`; image.hpp belongs to core); src/methods/<method>/ are rooms
+A folder is a room: src/<concept>/ with its public header include/vri/<concept>.hpp
+(PUBLIC below: methods.hpp, the methods' public face, is the room
+`integrators`; error, geometry, memory and image belong to core); src/methods/<method>/ are rooms
 of the methods wing; the front doors
 are src/cli, python/src, viewer/server, distributed and vulkan/host (with the
 shared GLSL). Tests, benchmarks and tools are left out.
@@ -28,6 +28,10 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SOURCES = (".cpp", ".hpp", ".comp", ".glsl")
 FRONTS = {"src/cli": "cli", "python/src": "python", "viewer/server": "viewer", "distributed": "distributed",
           "vulkan/host": "vulkan", "vulkan/shaders": "vulkan"}
+PUBLIC = {"error.hpp": "core", "geometry.hpp": "core", "memory.hpp": "core", "image.hpp": "core",
+          "camera.hpp": "camera", "transfer_function.hpp": "transfer", "volume.hpp": "volume",
+          "lighting.hpp": "shading", "methods.hpp": "integrators", "scene.hpp": "scene", "render.hpp": "render",
+          "io.hpp": "io", "analysis.hpp": "analysis"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 
@@ -38,10 +42,7 @@ def room_of(path):
             return name
     parts = path.split("/")
     if parts[0] == "include":
-        rest = parts[2:]  # include/vri/...
-        if len(rest) == 1:
-            return {"methods.hpp": "integrators"}.get(rest[0], "core")
-        return rest[0]
+        return PUBLIC[parts[-1]]
     if parts[0] == "src" and len(parts) > 2:
         if parts[1] == "methods":
             return "methods/" + parts[2] if len(parts) > 3 else "methods"

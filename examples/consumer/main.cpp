@@ -7,12 +7,12 @@
 #include <memory>
 #include <variant>
 
-#include <vri/camera/camera.hpp>
-#include <vri/core/error.hpp>
-#include <vri/integrators/make_integrator.hpp>
-#include <vri/io/npy.hpp>
-#include <vri/render/renderer.hpp>
-#include <vri/scene/scene.hpp>
+#include <vri/camera.hpp>
+#include <vri/error.hpp>
+#include <vri/methods.hpp>
+#include <vri/io.hpp>
+#include <vri/render.hpp>
+#include <vri/scene.hpp>
 #include <vri/version.hpp>
 
 int main(int argc, char** argv) {

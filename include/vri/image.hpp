@@ -2,13 +2,13 @@
 // Image: H x W premultiplied RGBA floats, row 0 at the top (SPEC §7).
 // The pixels are ZeroedFloats: from 1 MiB up (a 512 x 512 image is 4 MiB)
 // they start on zero pages of 2 MiB, so a frame does not pay a 4 KiB page
-// fault per 1024 pixels (vri/core/zeroed_floats.hpp).
+// fault per 1024 pixels (vri/memory.hpp).
 #include <cstddef>
 #include <span>
 #include <utility>
 
-#include "vri/core/rgba.hpp"
-#include "vri/core/zeroed_floats.hpp"
+#include "vri/geometry.hpp"
+#include "vri/memory.hpp"
 
 namespace vri {
 

@@ -1,13 +1,88 @@
 #pragma once
+// vri/methods.hpp: the methods (the registry: one row a paper), a method's parameters (MethodSpec) and the per-ray integrators made from them.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "vri/geometry.hpp"
+#include "vri/volume.hpp"
+#include "vri/lighting.hpp"
+#include "vri/transfer_function.hpp"
+
+// ---- method_spec -----------------------------------------------------------
+// MethodSpec: the "method" block of a scene (SPEC §8, §9) - which integrator
+// and its parameters. Step sizes are in voxel units (SPEC §1).
+
+namespace vri {
+
+// preint2*: chords per second-order table entry (El Hajjar et al.'s K) unless a scene says.
+inline constexpr int kDefaultSecondOrderIterations = 8;
+
+// FastPath: the speed-ups of the ray casters (riemann, preint1, preint2) that
+// change no pixel, or change it by a stated bound (issue 8; docs/PERFORMANCE.md).
+// - skip_empty: rays leap over macro cells whose values the transfer function
+//   maps to zero opacity (volume/empty_space.hpp); they stay on the same
+//   sample positions, so the image is the same bytes as without skipping.
+// - termination: a ray stops once its transmittance T falls below this
+//   threshold (0: never; SPEC is silent, so it is off unless asked for). What
+//   it drops is at most T < termination in alpha, and T times the largest
+//   colour (1 for unlit colours) in each colour channel.
+// - float_math (riemann, preint1, preint2): sampling, classification or
+//   table lookups and shading in float on the same sample positions
+//   (methods/riemann/float_riemann.hpp, float_march.hpp, float_shading.hpp),
+//   compositing in double (FrontToBack, methods/march/ray_steps.hpp: a float
+//   sum's roundings grew with the number of samples), on packets of 8 rays
+//   with AVX2 (methods/march/float_packet.hpp): unlit and lit, in both
+//   lighting modes of the pre-integrated methods. A pixel differs from the
+//   double path's by under 1e-4 per channel on the bundled scenes, and by
+//   under 1e-6 at fine steps (tested). Off: the double path, the reference.
+struct FastPath {
+  bool skip_empty = true;
+  double termination = 0;  // transmittance threshold in [0, 1)
+  bool float_math = true;
+};
+
+
+struct MethodSpec {
+  std::string name = "exact";
+  double step = 1.0;         // riemann, preint*: voxel units
+  double tolerance = 1e-6;   // exact, adaptive
+  int table_size = 256;      // preint*, pt*
+  bool table_size_given = false;  // named by the scene or a flag; else preint2-dual uses its own default (64)
+  int iterations = kDefaultSecondOrderIterations;  // preint2*: chords per second-order table entry (1..4096)
+  int length_samples = 64;   // pt, tet-raycast: lengths in the (l, s_f, s_b) table
+  int planes = 0;            // pt-cylindrical: cylinder planes (0: table_size)
+  // adaptive (Campagnolo et al. 2015 defaults), voxel units; strategy:
+  // coupled, decoupled or guaranteed
+  double h0 = 0.5, hmin = 0.1, hmax = 2.0;
+  std::string strategy = "coupled";
+  // preint*: pre-integration table builder. preint2* use it when it names a
+  // second-order builder (plain, fast), else the fast one.
+  std::string builder = "incremental";
+  // riemann, preint1, preint2: empty-space skipping (`skip_empty`, default on: it changes
+  // no pixel) and early ray termination (`termination`, a transmittance
+  // threshold; default 0, off). FastPath above.
+  FastPath fast{};
+  // Caps checked before rendering (issue 17): samples along one ray and
+  // samples in all (per ray x pixels); raised by max_samples / max_work.
+  double max_samples = 1e7, max_work = 2e10;
+  // riemann: the seed of the per-pixel jitter of the first sample (issue 20;
+  // riemann.hpp), against wood-grain rings; none: no jitter.
+  std::optional<std::uint64_t> jitter{};
+};
+
+}  // namespace vri
+
+// ---- methods ---------------------------------------------------------------
 // The methods of SPEC §9 and what each supports: the one list the front
 // doors read (the CLI's help, the scene's checks, the viewer's menu, the
 // Python docstring, the Vulkan and distributed front doors; issue 48).
 // Adding a method is its folder (src/methods/<method>/, with its
 // constructors) and its row in src/methods/method_registry.cpp.
-#include <memory>
-#include <string>
-#include <string_view>
-#include <vector>
 
 namespace vri {
 
@@ -63,5 +138,101 @@ std::string method_names(bool (*keep)(const MethodInfo&) = nullptr, std::string_
 
 // vri::Error "unknown method 'x' (known: ...)" unless the name is one.
 const MethodInfo& known_method(std::string_view name);
+
+}  // namespace vri
+
+// ---- integrator ------------------------------------------------------------
+// Integrator: one method of evaluating the volume rendering integral (SPEC §4)
+// along one ray. Every per-ray CPU method is a class behind this interface
+// (vri/methods.hpp per_ray); pt and pt-cylindrical project whole tetrahedra
+// (render_projected) and the GPU has its own kernels (render/backend.hpp). The
+// renderer calls integrate() concurrently from several threads, so it is const
+// and keeps no mutable state.
+
+namespace vri {
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  // Premultiplied (C_r, C_g, C_b, alpha) of the ray, before any background.
+  virtual Rgba integrate(const Ray& ray) const = 0;
+  // out[i] = integrate(rays[i]) for i < n, the same bytes; the renderer hands
+  // over two rows of a tile at a time, in blocks of 4 x 2 pixels, so a method
+  // may march neighbouring rays together (the packets of 8,
+  // methods/march/float_packet.hpp).
+  virtual void integrate_row(const Ray* rays, int n, Rgba* out) const {
+    for (int i = 0; i < n; ++i) out[i] = integrate(rays[i]);
+  }
+  // Where the method sees anything: a ray that misses the footprint
+  // integrates to exactly {0, 0, 0, 0}, the value an image starts with, so
+  // the renderer need not cast it (as VTK's ray casters cast only inside
+  // the volume's projected bounds). Null (the default): every ray is cast.
+  virtual const Footprint* footprint() const { return nullptr; }
+  virtual std::string_view name() const = 0;
+};
+
+}  // namespace vri
+
+// ---- error_estimating_integrator -------------------------------------------
+// An Integrator that also reports, per ray, its own error estimate, how many
+// evaluations it spent and (on request) the steps it took. The adaptive
+// methods implement it; `vri render --error-estimate` and the step plots of
+// docs/ADAPTIVE.md read it.
+
+namespace vri {
+
+// One accepted Simpson step of the ray (for plots like Campagnolo et al. 2015, Fig. 6).
+struct AdaptiveStep {
+  bool outer;    // outer (colour) integral, else inner (optical depth)
+  double t, h;   // start and length, world units
+  double alpha;  // opacity accumulated up to t + h (outer steps; 0 for inner steps)
+};
+
+struct RayStats {
+  long evaluations = 0;       // transfer-function evaluations (each at one field value)
+  Rgba error_estimate{};      // per channel, the accepted steps' error terms, summed
+  bool record_steps = false;  // set by the caller to fill `steps`
+  std::vector<AdaptiveStep> steps;
+};
+
+class ErrorEstimatingIntegrator : public Integrator {
+ public:
+  // As integrate(ray), adding this ray's figures to `stats`.
+  virtual Rgba integrate(const Ray& ray, RayStats& stats) const = 0;
+  Rgba integrate(const Ray& ray) const final {
+    RayStats stats;
+    return integrate(ray, stats);
+  }
+};
+
+}  // namespace vri
+
+// ---- make_integrator -------------------------------------------------------
+// The factory from a MethodSpec to an Integrator over a regular grid.
+
+namespace vri {
+
+// vri::Error unless the method (vri/methods.hpp) renders regular grids
+// (mesh false) or tetrahedral meshes (mesh true).
+void check_volume_kind(const MethodSpec& spec, bool mesh);
+
+// vri::Error if `spec` asks for jitter (MethodSpec::jitter) of a method without it (vri/methods.hpp).
+void check_jitter(const MethodSpec& spec);
+
+// vri::Error if `spec` asks for early ray termination of a method without it.
+void check_termination(const MethodSpec& spec);
+// vri::Error if `spec` asks for early ray termination on a tetrahedral mesh
+// (no mesh method has it yet), on the CPU or the GPU.
+void check_mesh_termination(const MethodSpec& spec);
+
+// Throws vri::Error for an unknown method (vri/methods.hpp), one that does
+// not render this kind of volume, or bad parameters. The integrator refers to `volume` and `tf`: keep them alive.
+std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const GridVolume& volume,
+                                            const TransferFunction& tf, const Lighting& lighting = {});
+
+// The same over a tetrahedral mesh (exact, tet-raycast); a grid-only method is refused,
+// and so is `pt`, which renders whole images (render_projected), not rays.
+std::unique_ptr<Integrator> make_integrator(const MethodSpec& spec, const TetMesh& mesh,
+                                            const TransferFunction& tf, const Lighting& lighting = {});
 
 }  // namespace vri

@@ -7,11 +7,10 @@
 
 #include "bindings.hpp"
 #include "interruptible.hpp"
-#include "vri/analysis/pixel_signal.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
-#include "vri/render/image_compare.hpp"
-#include "vri/render/table_request.hpp"
+#include "vri/analysis.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
+#include "vri/render.hpp"
 
 namespace vri::python {
 

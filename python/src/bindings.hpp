@@ -7,7 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include "vri/image.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::python {
 

@@ -3,7 +3,7 @@
 // thread of its own while the calling thread checks for signals every 0.1 s
 // (PyErr_CheckSignals). On one - Ctrl-C, Jupyter's "interrupt kernel" - the
 // work is cancelled (a render between tiles, a table build between rows:
-// vri/render/cancellation.hpp) and, once it has stopped, the signal's
+// vri/render.hpp) and, once it has stopped, the signal's
 // exception (KeyboardInterrupt) is raised. Issue 47: a render could not be
 // interrupted until it ended.
 #include <chrono>
@@ -15,7 +15,7 @@
 #include <type_traits>
 
 #include "bindings.hpp"
-#include "vri/render/cancellation.hpp"
+#include "vri/render.hpp"
 
 namespace vri::python {
 

@@ -4,9 +4,8 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "vri/render/backend.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/render.hpp"
+#include "vri/error.hpp"
 #include "vri/methods.hpp"
 
 namespace vri::python {

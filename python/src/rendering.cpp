@@ -8,12 +8,10 @@
 
 #include "bindings.hpp"
 #include "interruptible.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "vri/methods.hpp"
-#include "vri/integrators/error_estimating_integrator.hpp"
-#include "vri/render/render_checks.hpp"
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene_overrides.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::python {
 

@@ -7,7 +7,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "bindings.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::python {
 

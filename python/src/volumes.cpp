@@ -6,10 +6,8 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
-#include "vri/core/error.hpp"
-#include "vri/mesh/tet_mesh.hpp"
-#include "vri/volume/grid_volume.hpp"
-#include "vri/volume/scalar_type.hpp"
+#include "vri/error.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::python {
 

@@ -1,11 +1,10 @@
-#include "vri/analysis/pixel_signal.hpp"
+#include "vri/analysis.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "vri/camera/camera.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/camera.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

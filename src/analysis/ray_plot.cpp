@@ -1,4 +1,4 @@
-#include "vri/analysis/ray_plot.hpp"
+#include "vri/analysis.hpp"
 
 #include <algorithm>
 #include <cstdio>

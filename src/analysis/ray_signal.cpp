@@ -1,9 +1,9 @@
-#include "vri/analysis/ray_signal.hpp"
+#include "vri/analysis.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "volume/cell_traversal.hpp"
 
 namespace vri {

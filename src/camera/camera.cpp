@@ -1,11 +1,10 @@
-#include "vri/camera/camera.hpp"
+#include "vri/camera.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

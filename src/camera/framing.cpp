@@ -1,11 +1,10 @@
-#include "vri/camera/framing.hpp"
+#include "vri/camera.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

@@ -17,8 +17,8 @@
 #include <array>
 #include <vector>
 
-#include "vri/camera/camera.hpp"
-#include "vri/core/ray.hpp"
+#include "vri/camera.hpp"
+#include "vri/geometry.hpp"
 
 namespace vri {
 

@@ -10,7 +10,7 @@
 #include "commands.hpp"
 #include "scene/scene_json.hpp"
 #include "scene_options.hpp"
-#include "vri/camera/camera.hpp"
+#include "vri/camera.hpp"
 
 namespace vri::cli {
 

@@ -10,10 +10,9 @@
 #include <string>
 
 #include "commands.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
-#include "vri/io/npy.hpp"
-#include "vri/render/image_compare.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
+#include "vri/render.hpp"
 
 namespace vri::cli {
 

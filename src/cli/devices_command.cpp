@@ -5,7 +5,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "vri/render/backend.hpp"
+#include "vri/render.hpp"
 
 namespace vri::cli {
 

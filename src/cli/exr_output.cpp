@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
 
 #if VRI_HAVE_OPENEXR
 #include <OpenEXR/ImfChannelList.h>

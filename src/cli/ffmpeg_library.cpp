@@ -6,7 +6,7 @@
 #include <mutex>
 #include <string>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::cli {
 

@@ -12,13 +12,10 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
-#include "vri/io/png.hpp"
-#include "vri/io/raw_volume.hpp"
-#include "vri/io/volume_file.hpp"
-#include "vri/scene/scene.hpp"
-#include "vri/volume/histogram.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
+#include "vri/scene.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::cli {
 

@@ -8,10 +8,9 @@
 #include <string>
 
 #include "commands.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
-#include "vri/core/memory_limit.hpp"
-#include "vri/io/output_transaction.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
+#include "vri/io.hpp"
 #include "vri/version.hpp"
 
 int main(int argc, char** argv) {

@@ -1,6 +1,6 @@
 // vri ray SCENE.json --pixel PX PY [--step H] -o RAY.csv [--plot RAY.svg]:
 // the scalar signal along one pixel's ray and its 0th/1st/2nd-order
-// approximations with their errors xi (see vri/analysis/ray_signal.hpp).
+// approximations with their errors xi (see vri/analysis.hpp).
 #include <array>
 #include <cstdio>
 #include <memory>
@@ -10,12 +10,10 @@
 #include <string>
 
 #include "commands.hpp"
-#include "vri/analysis/pixel_signal.hpp"
-#include "vri/analysis/ray_plot.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
-#include "vri/io/file_io.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/analysis.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::cli {
 

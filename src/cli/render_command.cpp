@@ -22,15 +22,11 @@
 #include "progress_bar.hpp"
 #include "render_distributed.hpp"
 #include "scene_options.hpp"
-#include "vri/core/error.hpp"
-#include "vri/integrators/error_estimating_integrator.hpp"
-#include "vri/io/file_io.hpp"
-#include "vri/io/npy.hpp"
-#include "vri/io/png.hpp"
-#include "vri/render/render_checks.hpp"
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene.hpp"
-#include "vri/scene/scene_overrides.hpp"
+#include "vri/error.hpp"
+#include "vri/methods.hpp"
+#include "vri/io.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::cli {
 

@@ -2,8 +2,7 @@
 
 #include <iostream>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 #ifdef VRI_DISTRIBUTED
 #include <algorithm>
@@ -17,7 +16,7 @@
 #include "distributed_render.hpp"
 #include "kd_bricks.hpp"
 #include "mpi_world.hpp"
-#include "vri/render/render_checks.hpp"
+#include "vri/render.hpp"
 #include "vri/version.hpp"
 #endif
 

@@ -8,7 +8,7 @@
 
 #include "scene_options.hpp"
 #include "vri/image.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::cli {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "vri/methods.hpp"
 
 namespace vri::cli {

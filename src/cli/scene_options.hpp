@@ -6,9 +6,8 @@
 
 #include <string>
 
-#include "vri/render/backend.hpp"
-#include "vri/scene/scene.hpp"
-#include "vri/scene/scene_overrides.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::cli {
 

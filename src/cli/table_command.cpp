@@ -9,10 +9,10 @@
 #include <string>
 
 #include "commands.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/npy.hpp"
-#include "vri/scene/scene.hpp"
-#include "vri/render/table_request.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
+#include "vri/scene.hpp"
+#include "vri/render.hpp"
 
 namespace vri::cli {
 

@@ -19,13 +19,11 @@
 #include "progress_bar.hpp"
 #include "scene_options.hpp"
 #include "video_writer.hpp"
-#include "vri/camera/framing.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/output_transaction.hpp"
-#include "vri/io/file_io.hpp"
-#include "vri/io/png.hpp"
-#include "vri/render/render_checks.hpp"  // checked_threads
-#include "vri/render/scene_renderer.hpp"
+#include "vri/camera.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
+#include "vri/render.hpp"  // checked_threads
+#include "vri/render.hpp"
 
 namespace vri::cli {
 

@@ -4,8 +4,8 @@
 #include <cstring>
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/io/png.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
 
 #include "ffmpeg_library.hpp"
 

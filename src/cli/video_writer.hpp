@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "vri/core/vec3.hpp"
+#include "vri/geometry.hpp"
 #include "vri/image.hpp"
 
 namespace vri::cli {

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "commands.hpp"
-#include "vri/core/error.hpp"
-#include "vri/render/backend.hpp"
+#include "vri/error.hpp"
+#include "vri/render.hpp"
 #if VRI_VIEWER
 #include "viewer_server.hpp"
 #endif

@@ -1,4 +1,4 @@
-#include "vri/core/cancelled.hpp"
+#include "vri/error.hpp"
 
 #include <tbb/task_group.h>
 

@@ -1,6 +1,6 @@
 #include "core/checked_size.hpp"
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

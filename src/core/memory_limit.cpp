@@ -1,4 +1,4 @@
-#include "vri/core/memory_limit.hpp"
+#include "vri/memory.hpp"
 
 #include <unistd.h>
 
@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <utility>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

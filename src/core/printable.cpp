@@ -1,4 +1,4 @@
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "vri/core/ray.hpp"
+#include "vri/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "vri/io/file_io.hpp"
+#include "vri/io.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -8,8 +8,7 @@
 #include <system_error>
 #include <unistd.h>
 
-#include "vri/core/error.hpp"
-#include "vri/io/output_transaction.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

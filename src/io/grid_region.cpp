@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
 
 namespace vri {
 

@@ -8,8 +8,7 @@
 #include <functional>
 #include <span>
 
-#include "vri/volume/grid_part.hpp"
-#include "vri/volume/scalar_type.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

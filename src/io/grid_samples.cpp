@@ -12,8 +12,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
 
 namespace vri {
 

@@ -12,9 +12,8 @@
 #include <span>
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/volume/grid_volume.hpp"
-#include "vri/volume/scalar_type.hpp"
+#include "vri/error.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

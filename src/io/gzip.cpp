@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <string>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

@@ -18,9 +18,9 @@
 
 #include "grid_samples.hpp"
 #include "gzip.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
+#include "vri/io.hpp"
 
 namespace vri {
 

@@ -1,14 +1,13 @@
 // NumPy .npy files: the header (NEP 1, numpy.lib.format), float arrays for images.
-#include "vri/io/npy.hpp"
+#include "vri/io.hpp"
 
 #include <charconv>
 #include <cstring>
 #include <string>
 
 #include "npy_header.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
-#include "vri/volume/scalar_type.hpp"
+#include "vri/error.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -12,10 +12,9 @@
 
 #include "grid_samples.hpp"
 #include "npy_header.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
-#include "vri/io/file_io.hpp"
-#include "vri/io/npy.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
+#include "vri/io.hpp"
 
 namespace vri {
 

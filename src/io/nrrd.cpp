@@ -15,8 +15,8 @@
 
 #include "grid_samples.hpp"
 #include "gzip.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
 #include "io/grid_region.hpp"
 
 namespace vri {

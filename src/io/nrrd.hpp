@@ -3,9 +3,7 @@
 // raw, gzip and ascii encodings, either endianness.
 #include <filesystem>
 
-#include "vri/volume/grid_part.hpp"
-#include "vri/volume/grid_volume.hpp"
-#include "vri/volume/scalar_type.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

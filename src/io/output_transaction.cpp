@@ -1,4 +1,4 @@
-#include "vri/io/output_transaction.hpp"
+#include "vri/io.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -11,7 +11,7 @@
 #include <cstring>
 #include <string>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

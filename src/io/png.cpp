@@ -1,4 +1,4 @@
-#include "vri/io/png.hpp"
+#include "vri/io.hpp"
 
 #include <png.h>
 
@@ -7,8 +7,7 @@
 #include <cstring>
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

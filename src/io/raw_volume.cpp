@@ -1,9 +1,8 @@
-#include "vri/io/raw_volume.hpp"
+#include "vri/io.hpp"
 
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
 #include "io/grid_region.hpp"
 
 namespace vri {

@@ -14,9 +14,9 @@
 
 #include "grid_samples.hpp"
 #include "tiff_handle.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
+#include "vri/io.hpp"
 
 namespace vri {
 

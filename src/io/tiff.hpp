@@ -28,7 +28,7 @@
 #include <string_view>
 #include <vector>
 
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

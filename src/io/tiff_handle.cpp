@@ -9,10 +9,9 @@
 #include <fstream>
 #include <limits>
 
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
-#include "vri/core/printable.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
+#include "vri/io.hpp"
 
 namespace vri::tiff {
 

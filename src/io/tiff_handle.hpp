@@ -7,7 +7,7 @@
 // installs libtiff's process-wide handlers (errors reported without a TIFF*
 // go to the innermost Handle of the thread, warnings nowhere), so libtiff
 // never writes to stderr. libtiff's own allocations are capped by the memory
-// budget (vri/core/memory_limit.hpp).
+// budget (vri/memory.hpp).
 #include <tiffio.h>
 
 #include <cstddef>

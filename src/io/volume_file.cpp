@@ -1,4 +1,4 @@
-#include "vri/io/volume_file.hpp"
+#include "vri/io.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -6,9 +6,7 @@
 #include <system_error>
 #include <vector>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
 #include "io/vtk_legacy.hpp"
 
 namespace vri {

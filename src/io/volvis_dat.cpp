@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
-#include "vri/volume/scalar_type.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

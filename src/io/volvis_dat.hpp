@@ -2,7 +2,7 @@
 // The volvis.org ".dat" format: three little-endian uint16 dims, then uint16 samples.
 #include <filesystem>
 
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "core/checked_size.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
 #include "grid_samples.hpp"
 #include "vtk_grid.hpp"
 #include "vtk_xml.hpp"

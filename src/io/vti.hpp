@@ -16,7 +16,7 @@
 #include <span>
 #include <string>
 
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "grid_samples.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 #include "vtk_values.hpp"
 
 namespace vri::vtk {

@@ -15,8 +15,7 @@
 #include <span>
 #include <string>
 
-#include "vri/mesh/tet_mesh.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

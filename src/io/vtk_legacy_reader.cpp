@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "core/checked_size.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
 
 namespace vri::vtk::legacy {
 

@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "vri/core/charged_vector.hpp"
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/memory.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::vtk {
 

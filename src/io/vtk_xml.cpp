@@ -9,7 +9,7 @@
 #include <cstring>
 
 #include "core/checked_size.hpp"
-#include "vri/core/memory_limit.hpp"
+#include "vri/memory.hpp"
 
 namespace vri::vtk::xml {
 

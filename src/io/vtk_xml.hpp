@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "vtk_values.hpp"
 
 namespace vri::vtk::xml {

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "core/checked_size.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
 #include "vtk_values.hpp"
 #include "vtk_xml.hpp"
 

@@ -10,7 +10,7 @@
 #include <span>
 #include <string>
 
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -6,9 +6,9 @@
 #include <optional>
 #include <vector>
 
-#include "vri/core/memory_limit.hpp"
-#include "vri/core/ray.hpp"
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/memory.hpp"
+#include "vri/geometry.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

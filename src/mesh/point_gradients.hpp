@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "vri/core/vec3.hpp"
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/geometry.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -1,11 +1,11 @@
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/volume.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

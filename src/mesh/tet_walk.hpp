@@ -15,10 +15,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "vri/core/memory_limit.hpp"
-#include "vri/core/ray.hpp"
+#include "vri/memory.hpp"
+#include "vri/geometry.hpp"
 #include "mesh/boundary_bvh.hpp"
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

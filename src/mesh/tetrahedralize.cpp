@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
 
 namespace vri {
 

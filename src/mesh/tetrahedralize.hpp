@@ -9,8 +9,7 @@
 //    (i+1,j+1,k+1), the same in every cell.
 // A field linear in space is reproduced exactly either way (trilinear and
 // piecewise-linear interpolation agree on it).
-#include "vri/mesh/tet_mesh.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

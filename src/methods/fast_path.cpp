@@ -2,8 +2,7 @@
 
 #include <utility>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

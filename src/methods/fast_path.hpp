@@ -1,12 +1,12 @@
 #pragma once
-// What an integrator holds for its fast path (FastPath, vri/integrators/method_spec.hpp):
+// What an integrator holds for its fast path (FastPath, vri/methods.hpp):
 // the macro cells of its volume, their classification against its transfer
 // function and the termination threshold.
 #include <memory>
 #include <optional>
 #include <string>
 
-#include "vri/integrators/method_spec.hpp"
+#include "vri/methods.hpp"
 #include "tables/zero_opacity.hpp"
 #include "volume/empty_space.hpp"
 #include "volume/macro_cells.hpp"

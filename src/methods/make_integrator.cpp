@@ -1,15 +1,14 @@
-#include "vri/integrators/make_integrator.hpp"
+#include "vri/methods.hpp"
 #include "methods/mesh_tables.hpp"
 
 #include <algorithm>
 #include <optional>
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"  // format_g
+#include "vri/error.hpp"
+#include "vri/error.hpp"  // format_g
 #include "tables/table_builder.hpp"
 #include "tables/weighted_tables.hpp"
-#include "vri/methods.hpp"
 
 namespace vri {
 

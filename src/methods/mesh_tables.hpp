@@ -3,12 +3,12 @@
 // built from a scene's MethodSpec (src/methods/make_integrator.cpp).
 #include <memory>
 
-#include "vri/integrators/method_spec.hpp"
-#include "vri/mesh/tet_mesh.hpp"
-#include "vri/shading/lighting.hpp"
+#include "vri/methods.hpp"
+#include "vri/volume.hpp"
+#include "vri/lighting.hpp"
 #include "tables/slab_table.hpp"
 #include "tables/weighted_tables.hpp"
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri {
 

@@ -10,7 +10,7 @@
 #include "preint2_dual/preint2_dual.hpp"
 #include "riemann/riemann.hpp"
 #include "tet_raycast/tet_raycast.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 // A GPU renderer exists in a build with the Vulkan backend only.
 #if VRI_VULKAN

@@ -1,17 +1,15 @@
-#include "vri/render/scene_renderer.hpp"
+#include "vri/render.hpp"
 
 #include <tbb/task_arena.h>
 
 #include <optional>
 #include <variant>
 
-#include "vri/core/error.hpp"
-#include "vri/integrators/make_integrator.hpp"
-#include "methods/mesh_tables.hpp"
+#include "vri/error.hpp"
 #include "vri/methods.hpp"
+#include "methods/mesh_tables.hpp"
 #include "methods/projected/projected_tetrahedra.hpp"
 #include "render/error_estimate.hpp"
-#include "vri/render/render_checks.hpp"
 
 namespace vri {
 

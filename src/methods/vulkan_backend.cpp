@@ -1,14 +1,14 @@
-// The Vulkan backend's entry points (include/vri/render/backend.hpp): which
+// The Vulkan backend's entry points (include/vri/render.hpp): which
 // method runs on the GPU (its renderer: the registry's make_gpu), which table builders do, and the device list of
 // `vri devices`.
 #include <string>
 #include <vector>
 
-#include "vri/core/error.hpp"
-#include "vri/integrators/make_integrator.hpp"  // check_mesh_termination
+#include "vri/error.hpp"
+#include "vri/methods.hpp"  // check_mesh_termination
 #include "vri/methods.hpp"
-#include "vri/render/backend.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "vulkan_device.hpp"
 #include "vulkan_table_builders.hpp"
 

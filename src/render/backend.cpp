@@ -1,6 +1,6 @@
-#include "vri/render/backend.hpp"
+#include "vri/render.hpp"
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "tables/second_order_table.hpp"
 #include "tables/table_builder.hpp"
 

@@ -4,10 +4,10 @@
 // accepted error terms (SPEC §7 layout, shape (H, W, 4) as .npy). It is a
 // second pass over the image, run by the same renderer, so it is the same
 // bytes for any thread count.
-#include "vri/camera/camera.hpp"
-#include "vri/integrators/error_estimating_integrator.hpp"
+#include "vri/camera.hpp"
+#include "vri/methods.hpp"
 #include "vri/image.hpp"
-#include "vri/render/renderer.hpp"
+#include "vri/render.hpp"
 
 namespace vri {
 

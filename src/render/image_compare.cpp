@@ -1,8 +1,8 @@
-#include "vri/render/image_compare.hpp"
+#include "vri/render.hpp"
 
 #include <cmath>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

@@ -1,4 +1,4 @@
-#include "vri/render/render_checks.hpp"
+#include "vri/render.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -6,8 +6,7 @@
 #include <cstdint>
 #include <span>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 #include "vri/methods.hpp"
 
 namespace vri {

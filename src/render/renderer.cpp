@@ -1,4 +1,4 @@
-#include "vri/render/renderer.hpp"
+#include "vri/render.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "camera/screen_footprint.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

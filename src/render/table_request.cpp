@@ -1,11 +1,10 @@
-#include "vri/render/table_request.hpp"
+#include "vri/render.hpp"
 
 #include <chrono>
 #include <memory>
 
-#include "vri/core/error.hpp"
-#include "vri/integrators/method_spec.hpp"  // kDefaultSecondOrderIterations
-#include "vri/render/backend.hpp"
+#include "vri/error.hpp"
+#include "vri/methods.hpp"  // kDefaultSecondOrderIterations
 #include "tables/second_order_table.hpp"
 #include "tables/sliced_builder.hpp"
 #include "tables/table_builder.hpp"

@@ -1,8 +1,8 @@
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 
 #include <algorithm>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

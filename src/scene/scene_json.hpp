@@ -5,9 +5,9 @@
 // project only (nlohmann_json stays out of the installed headers).
 #include <nlohmann/json.hpp>
 
-#include "vri/camera/camera.hpp"
-#include "vri/shading/lighting.hpp"
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/camera.hpp"
+#include "vri/lighting.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri {
 

@@ -12,15 +12,12 @@
 #include <string>
 #include <tuple>
 
-#include "vri/camera/framing.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/camera.hpp"
+#include "vri/error.hpp"
 #include "io/metaimage.hpp"
-#include "vri/io/npy.hpp"
+#include "vri/io.hpp"
 #include "io/nrrd.hpp"
-#include "vri/io/raw_volume.hpp"
 #include "io/tiff.hpp"
-#include "vri/io/volume_file.hpp"
 #include "io/volvis_dat.hpp"
 #include "io/vti.hpp"
 #include "io/vtk_legacy.hpp"
@@ -28,10 +25,9 @@
 #include "tables/second_order_table.hpp"
 #include "tables/table_builder.hpp"
 #include "mesh/tetrahedralize.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 #include "volume/builtin_volumes.hpp"
 #include "core/json_support.hpp"
-#include "vri/io/file_io.hpp"
 #include "scene/transfer_function_json.hpp"
 
 namespace vri {
@@ -41,7 +37,7 @@ using json = nlohmann::json;
 
 namespace {
 
-// parse_json, found and key_suggestion: core/json_support.hpp; text_of: vri/io/file_io.hpp.
+// parse_json, found and key_suggestion: core/json_support.hpp; text_of: vri/io.hpp.
 
 // Typed access to one object of the scene; every error names the file, the
 // key path, what was expected and what was found.

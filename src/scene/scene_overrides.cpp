@@ -1,6 +1,6 @@
-#include "vri/scene/scene_overrides.hpp"
+#include "vri/scene.hpp"
 
-#include "vri/camera/framing.hpp"
+#include "vri/camera.hpp"
 
 namespace vri {
 

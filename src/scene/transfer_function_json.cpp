@@ -11,9 +11,8 @@
 #include <utility>
 
 #include "core/json_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
 #include "scene/value_range.hpp"
 
 namespace vri {

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "vri/scene/scene.hpp"
-#include "vri/transfer/colormap.hpp"
+#include "vri/scene.hpp"
+#include "vri/transfer_function.hpp"
 #include "transfer/paraview_colormap.hpp"
 
 namespace vri {

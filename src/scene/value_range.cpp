@@ -5,10 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
-#include "vri/core/memory_limit.hpp"
-#include "vri/volume/histogram.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

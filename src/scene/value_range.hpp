@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <span>
 
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 

@@ -16,7 +16,7 @@
 // same lighting serves every mesh method.
 #include <cstdint>
 
-#include "vri/core/rgba.hpp"
+#include "vri/geometry.hpp"
 #include "mesh/point_gradients.hpp"
 #include "shading/headlight_shader.hpp"
 

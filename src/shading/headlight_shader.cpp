@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

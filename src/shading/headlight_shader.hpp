@@ -8,10 +8,10 @@
 // the gradient (PointGradients) and the threshold is per unit length.
 #include <optional>
 
-#include "vri/core/vec3.hpp"
-#include "vri/shading/lighting.hpp"
+#include "vri/geometry.hpp"
+#include "vri/lighting.hpp"
 #include "volume/gradient_field.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -8,7 +8,7 @@
 // float), the same operations in the same order for both.
 #include <array>
 
-#include "vri/core/rgba.hpp"
+#include "vri/geometry.hpp"
 #include "shading/headlight_shader.hpp"
 
 namespace vri {

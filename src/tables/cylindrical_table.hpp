@@ -16,7 +16,7 @@
 // between them. All planes are tiles of one array, as in the paper's Fig. 10.
 #include <vector>
 
-#include "vri/core/rgba.hpp"
+#include "vri/geometry.hpp"
 #include "tables/slab_table.hpp"
 
 namespace vri {

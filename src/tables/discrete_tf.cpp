@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

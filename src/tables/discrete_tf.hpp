@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri {
 

@@ -8,7 +8,7 @@
 #include <array>
 #include <cstring>
 
-#include "vri/core/rgba.hpp"
+#include "vri/geometry.hpp"
 #include "tables/preintegration_table.hpp"
 
 namespace vri {

@@ -9,8 +9,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "vri/core/memory_limit.hpp"
-#include "vri/core/rgba.hpp"
+#include "vri/memory.hpp"
+#include "vri/geometry.hpp"
 #include "tables/second_order_table.hpp"
 
 namespace vri {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

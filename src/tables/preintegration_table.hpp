@@ -8,8 +8,8 @@
 #include <span>
 #include <vector>
 
-#include "vri/core/rgba.hpp"
-#include "vri/core/zeroed_floats.hpp"
+#include "vri/geometry.hpp"
+#include "vri/memory.hpp"
 #include "tables/discrete_tf.hpp"
 #include "tables/slab_table.hpp"
 

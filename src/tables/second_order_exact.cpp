@@ -3,12 +3,11 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
-#include "vri/core/cancelled.hpp"
+#include "vri/error.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "vri/core/error.hpp"
 #include "tables/table_builder.hpp"
 
 namespace vri {

@@ -3,7 +3,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
-#include "vri/core/cancelled.hpp"
+#include "vri/error.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@
 #include <array>
 #include <cstddef>
 
-#include "vri/core/rgba.hpp"
+#include "vri/geometry.hpp"
 #include "tables/float_lookup.hpp"
 #include "tables/second_order_table.hpp"
 

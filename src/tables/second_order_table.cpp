@@ -8,8 +8,7 @@
 
 #include "tables/second_order_chords.hpp"
 #include "tables/trilinear.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 #include "tables/incremental_builder.hpp"
 #include "tables/second_order_exact.hpp"
 #include "tables/second_order_fast.hpp"

@@ -23,8 +23,8 @@
 #include <string_view>
 #include <vector>
 
-#include "vri/core/rgba.hpp"
-#include "vri/core/zeroed_floats.hpp"
+#include "vri/geometry.hpp"
+#include "vri/memory.hpp"
 #include "tables/discrete_tf.hpp"
 #include "tables/slab_rgba.hpp"
 #include "tables/slab_table.hpp"  // length_bracket

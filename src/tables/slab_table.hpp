@@ -6,7 +6,7 @@
 // interface, so any builder can stand behind it.
 #include <algorithm>
 
-#include "vri/core/rgba.hpp"
+#include "vri/geometry.hpp"
 #include "tables/discrete_tf.hpp"
 
 namespace vri {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

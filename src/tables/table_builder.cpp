@@ -3,8 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 #include "tables/brute_builder.hpp"
 #include "tables/engel_builder.hpp"
 #include "tables/exact_builder.hpp"

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "vri/core/rgba.hpp"
+#include "vri/geometry.hpp"
 
 namespace vri {
 

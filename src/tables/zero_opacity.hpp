@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "tables/discrete_tf.hpp"
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri {
 

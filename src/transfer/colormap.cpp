@@ -1,4 +1,4 @@
-#include "vri/transfer/colormap.hpp"
+#include "vri/transfer_function.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -12,7 +12,7 @@
 #include <array>
 #include <vector>
 
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri {
 

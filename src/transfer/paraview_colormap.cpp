@@ -15,8 +15,7 @@
 #include <numbers>
 
 #include "core/json_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "vri/transfer/colormap.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri {
 

@@ -1,12 +1,11 @@
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

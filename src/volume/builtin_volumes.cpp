@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "vri/core/memory_limit.hpp"
+#include "vri/memory.hpp"
 
 namespace vri {
 

@@ -3,8 +3,7 @@
 #include <array>
 #include <cstdint>
 
-#include "vri/volume/grid_part.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

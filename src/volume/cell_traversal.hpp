@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "vri/core/ray.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/geometry.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -27,7 +27,7 @@
 #include <limits>
 #include <vector>
 
-#include "vri/core/ray.hpp"
+#include "vri/geometry.hpp"
 #include "tables/zero_opacity.hpp"
 #include "volume/macro_cells.hpp"
 

@@ -14,8 +14,8 @@
 #include <array>
 #include <cstddef>
 
-#include "vri/core/vec3.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/geometry.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

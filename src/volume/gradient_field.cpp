@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "vri/core/memory_limit.hpp"
+#include "vri/memory.hpp"
 
 namespace vri {
 

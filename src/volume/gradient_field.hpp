@@ -7,9 +7,9 @@
 #include <array>
 #include <vector>
 
-#include "vri/core/memory_limit.hpp"
-#include "vri/core/vec3.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/memory.hpp"
+#include "vri/geometry.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -1,9 +1,9 @@
-#include "vri/volume/grid_part.hpp"
+#include "vri/volume.hpp"
 
 #include <string>
 #include <vector>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

@@ -1,4 +1,4 @@
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -6,8 +6,8 @@
 #include <mutex>
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
 #include "volume/macro_cells.hpp"
 
 namespace vri {

@@ -1,9 +1,9 @@
-#include "vri/volume/histogram.hpp"
+#include "vri/volume.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -1,9 +1,9 @@
-#include "vri/volume/scalar_type.hpp"
+#include "vri/volume.hpp"
 
 #include <bit>
 #include <cstring>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

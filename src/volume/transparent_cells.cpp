@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <bit>
 
-#include "vri/core/memory_limit.hpp"
+#include "vri/memory.hpp"
 
 namespace vri {
 

@@ -14,7 +14,7 @@
 
 #include "tables/zero_opacity.hpp"
 #include "volume/empty_space.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

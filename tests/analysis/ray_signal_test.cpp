@@ -1,12 +1,11 @@
-#include "vri/analysis/ray_signal.hpp"
+#include "vri/analysis.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "test_support.hpp"
-#include "vri/analysis/ray_plot.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

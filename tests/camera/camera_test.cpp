@@ -1,10 +1,10 @@
-#include "vri/camera/camera.hpp"
+#include "vri/camera.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

@@ -2,16 +2,15 @@
 // aspect, either projection, z-up data seen from the side), move_camera
 // follows VTK's Azimuth, Elevation, Roll and Zoom, and scenes and overrides
 // use them ("fit", the default without an eye).
-#include "vri/camera/framing.hpp"
+#include "vri/camera.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/scene/scene.hpp"
-#include "vri/scene/scene_overrides.hpp"
+#include "vri/error.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "vri/io/npy.hpp"
+#include "vri/io.hpp"
 
 namespace vri {
 namespace {

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/cli_support.hpp"
-#include "vri/io/npy.hpp"
+#include "vri/io.hpp"
 
 namespace vri::test {
 namespace {

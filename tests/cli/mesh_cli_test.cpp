@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "test_support.hpp"
-#include "vri/io/npy.hpp"
+#include "vri/io.hpp"
 
 namespace vri {
 namespace {

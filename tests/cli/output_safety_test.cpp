@@ -15,8 +15,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "vri/io/file_io.hpp"
-#include "vri/io/output_transaction.hpp"
+#include "vri/io.hpp"
 
 extern char** environ;
 

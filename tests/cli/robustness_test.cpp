@@ -10,7 +10,7 @@
 #include <string>
 
 #include "cli_support.hpp"
-#include "vri/io/npy.hpp"
+#include "vri/io.hpp"
 
 namespace vri {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "test_support.hpp"
-#include "vri/io/npy.hpp"
+#include "vri/io.hpp"
 
 namespace vri {
 namespace {

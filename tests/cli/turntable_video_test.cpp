@@ -14,7 +14,7 @@ extern "C" {
 #include <cstdio>
 
 #include "cli/cli_support.hpp"
-#include "vri/io/npy.hpp"
+#include "vri/io.hpp"
 
 namespace vri::test {
 namespace {

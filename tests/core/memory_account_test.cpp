@@ -10,12 +10,10 @@
 #include <thread>
 #include <vector>
 
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
-#include "vri/core/zeroed_floats.hpp"
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
+#include "vri/volume.hpp"
 #include "volume/gradient_field.hpp"
-#include "vri/volume/grid_volume.hpp"
 
 namespace vri {
 namespace {

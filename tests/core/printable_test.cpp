@@ -1,6 +1,6 @@
 // Messages that leave vri (issue 47, defect 10): one short line whatever a
 // reader quoted from a file.
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 #include <gtest/gtest.h>
 

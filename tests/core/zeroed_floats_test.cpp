@@ -1,4 +1,4 @@
-#include "vri/core/zeroed_floats.hpp"
+#include "vri/memory.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,8 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

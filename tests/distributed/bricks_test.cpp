@@ -11,8 +11,8 @@
 #include "brick_volume.hpp"
 #include "kd_bricks.hpp"
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/integrators/make_integrator.hpp"
+#include "vri/error.hpp"
+#include "vri/methods.hpp"
 
 namespace vri::distributed {
 namespace {

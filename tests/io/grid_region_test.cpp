@@ -12,9 +12,9 @@
 
 #include "io/gzip.hpp"
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "io/nrrd.hpp"
-#include "vri/io/raw_volume.hpp"
+#include "vri/io.hpp"
 #include "volume/builtin_volumes.hpp"
 
 namespace vri {

@@ -6,7 +6,7 @@
 #include <span>
 #include <string>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "io/vtk_legacy.hpp"
 #include "io/vtu.hpp"
 

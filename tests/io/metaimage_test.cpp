@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "io/pattern_fixtures.hpp"
-#include "vri/io/raw_volume.hpp"
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/io.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

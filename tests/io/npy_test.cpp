@@ -1,10 +1,9 @@
-#include "vri/io/npy.hpp"
+#include "vri/io.hpp"
 
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "io/pattern_fixtures.hpp"
-#include "vri/io/npy.hpp"
+#include "vri/io.hpp"
 
 namespace vri {
 namespace {

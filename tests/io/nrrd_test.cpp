@@ -10,7 +10,7 @@
 #include "io/gzip.hpp"
 #include "io/pattern_fixtures.hpp"
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "volume/builtin_volumes.hpp"
 
 namespace vri {

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::test {
 

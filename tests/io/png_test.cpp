@@ -1,4 +1,4 @@
-#include "vri/io/png.hpp"
+#include "vri/io.hpp"
 
 #include <gtest/gtest.h>
 #include <png.h>
@@ -7,7 +7,7 @@
 #include <cstring>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

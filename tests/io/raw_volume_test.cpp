@@ -1,4 +1,4 @@
-#include "vri/io/raw_volume.hpp"
+#include "vri/io.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

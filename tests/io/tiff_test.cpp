@@ -17,11 +17,10 @@
 
 #include "io/pattern_fixtures.hpp"
 #include "test_support.hpp"
-#include "vri/core/memory_limit.hpp"
-#include "vri/io/npy.hpp"
-#include "vri/io/volume_file.hpp"
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/memory.hpp"
+#include "vri/io.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

@@ -1,17 +1,16 @@
 // Volume files told apart by what they are: each format by its magic bytes
 // (whatever the file is called), scenes that name any of them, and one line
 // naming every supported format when a file has no header vri knows.
-#include "vri/io/volume_file.hpp"
+#include "vri/io.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/raw_volume.hpp"
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/error.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

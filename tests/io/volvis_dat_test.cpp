@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

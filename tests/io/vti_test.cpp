@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "io/vtk_volume_test_support.hpp"
-#include "vri/core/memory_limit.hpp"
-#include "vri/render/scene_renderer.hpp"
+#include "vri/memory.hpp"
+#include "vri/render.hpp"
 
 namespace vri {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "io/mesh_io_test_support.hpp"
 #include "test_support.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::test::vtk_fixtures {
 

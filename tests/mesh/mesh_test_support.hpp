@@ -2,7 +2,7 @@
 // Small meshes for the mesh tests.
 #include <vector>
 
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/volume.hpp"
 #include "mesh/tetrahedralize.hpp"
 #include "test_support.hpp"
 

@@ -1,4 +1,4 @@
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/volume.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "mesh/mesh_test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
 
 namespace vri {
 namespace {

@@ -15,12 +15,12 @@
 #include <vector>
 
 #include "test_support.hpp"
-#include "vri/camera/camera.hpp"
-#include "vri/integrators/make_integrator.hpp"
+#include "vri/camera.hpp"
+#include "vri/methods.hpp"
 #include "methods/mesh_tables.hpp"
 #include "methods/projected/projected_tetrahedra.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "tables/cylindrical_table.hpp"
 
 namespace vri {

@@ -4,10 +4,9 @@
 // reference image: shared by the pre-integration tests.
 #include <string>
 
-#include "vri/integrators/make_integrator.hpp"
-#include "vri/render/image_compare.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/methods.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::test {
 

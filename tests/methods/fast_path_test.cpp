@@ -17,11 +17,11 @@
 
 #include "methods/march/float_packet.hpp"
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/integrators/make_integrator.hpp"
-#include "vri/render/render_checks.hpp"  // termination_bound
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/error.hpp"
+#include "vri/methods.hpp"
+#include "vri/render.hpp"  // termination_bound
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "tables/zero_opacity.hpp"
 #include "volume/builtin_volumes.hpp"
 #include "volume/empty_space.hpp"

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "test_support.hpp"
-#include "vri/integrators/make_integrator.hpp"
+#include "vri/methods.hpp"
 
 namespace vri {
 namespace {

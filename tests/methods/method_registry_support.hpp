@@ -4,11 +4,10 @@
 #include <string>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "vri/methods.hpp"
-#include "vri/render/backend.hpp"
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::test {
 

@@ -7,10 +7,10 @@
 #include <string>
 
 #include "methods/method_registry_support.hpp"
-#include "vri/integrators/make_integrator.hpp"
-#include "vri/render/backend.hpp"  // vulkan_backend_built
-#include "vri/render/render_checks.hpp"  // check_work
-#include "vri/camera/camera.hpp"
+#include "vri/methods.hpp"
+#include "vri/render.hpp"  // vulkan_backend_built
+#include "vri/render.hpp"  // check_work
+#include "vri/camera.hpp"
 
 namespace vri {
 namespace {

@@ -14,7 +14,7 @@ scene=$src/scenes/marschner_lobb.json
 for component in runtime devel; do
   "$cmake" --install "$build" --prefix "$tmp/prefix" --component $component >/dev/null
 done
-for f in bin/vri include/vri/version.hpp include/vri/scene/scene.hpp; do
+for f in bin/vri include/vri/version.hpp include/vri/scene.hpp; do
   [[ -e $tmp/prefix/$f ]] || { echo "FAIL: $f not installed"; exit 1; }
 done
 [[ -n $(find "$tmp/prefix" -name vriConfig.cmake) ]] || { echo "FAIL: no vriConfig.cmake installed"; exit 1; }

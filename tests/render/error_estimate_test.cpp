@@ -8,7 +8,7 @@
 #include "methods/adaptive/adaptive_simpson.hpp"
 #include "methods/exact/exact.hpp"
 #include "render/error_estimate.hpp"
-#include "vri/render/renderer.hpp"
+#include "vri/render.hpp"
 #include "volume/builtin_volumes.hpp"
 
 namespace vri {

@@ -1,11 +1,11 @@
 #include "test_support.hpp"
-#include "vri/render/image_compare.hpp"
+#include "vri/render.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

@@ -1,11 +1,11 @@
-#include "vri/render/render_checks.hpp"
+#include "vri/render.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "vri/image.hpp"
 
 namespace vri {

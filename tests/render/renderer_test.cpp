@@ -1,4 +1,4 @@
-#include "vri/render/renderer.hpp"
+#include "vri/render.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include "test_support.hpp"
 #include "camera/screen_footprint.hpp"
 #include "methods/exact/exact.hpp"
-#include "vri/integrators/make_integrator.hpp"
+#include "vri/methods.hpp"
 #include "methods/preint/preint1.hpp"
 #include "methods/riemann/riemann.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

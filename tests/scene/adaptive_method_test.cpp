@@ -1,8 +1,8 @@
 // The adaptive keys of a scene's method block (SPEC §8, §9).
 #include <gtest/gtest.h>
 
-#include "vri/core/error.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/error.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

@@ -9,8 +9,8 @@
 
 #include "test_support.hpp"
 #include "vri/methods.hpp"
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

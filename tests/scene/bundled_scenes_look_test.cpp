@@ -12,9 +12,8 @@
 #include <vector>
 
 #include "test_support.hpp"
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene.hpp"
-#include "vri/scene/scene_overrides.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

@@ -4,9 +4,9 @@
 #include <string>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/integrators/make_integrator.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/error.hpp"
+#include "vri/methods.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

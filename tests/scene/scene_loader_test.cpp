@@ -1,10 +1,10 @@
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/integrators/make_integrator.hpp"
+#include "vri/error.hpp"
+#include "vri/methods.hpp"
 
 namespace vri {
 namespace {

@@ -1,8 +1,8 @@
-#include "vri/scene/scene_overrides.hpp"
+#include "vri/scene.hpp"
 
 #include <gtest/gtest.h>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

@@ -9,10 +9,10 @@
 
 #include "scene/transfer_function_json.hpp"
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/error.hpp"
+#include "vri/scene.hpp"
 #include "scene/value_range.hpp"
-#include "vri/transfer/colormap.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "tables/length_table_support.hpp"
 
 namespace vri {

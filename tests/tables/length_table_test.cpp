@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "methods/exact/piece_integrator.hpp"
 
 namespace vri {

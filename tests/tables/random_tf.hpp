@@ -4,7 +4,7 @@
 #include <random>
 #include <vector>
 
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri::test {
 

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "test_support.hpp"
-#include "vri/io/npy.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/io.hpp"
+#include "vri/scene.hpp"
 #include "tables/second_order_table.hpp"
 
 namespace vri {

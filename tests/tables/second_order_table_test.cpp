@@ -10,8 +10,8 @@
 #include <utility>
 
 #include "tables/random_tf.hpp"
-#include "vri/core/error.hpp"
-#include "vri/integrators/method_spec.hpp"  // kDefaultSecondOrderIterations
+#include "vri/error.hpp"
+#include "vri/methods.hpp"  // kDefaultSecondOrderIterations
 #include "tables/second_order_exact.hpp"
 #include "tables/second_order_table.hpp"
 #include "tables/slab_integral.hpp"

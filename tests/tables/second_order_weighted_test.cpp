@@ -15,7 +15,7 @@
 
 #include "tables/random_tf.hpp"
 #include "tables/second_order_chord_model.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

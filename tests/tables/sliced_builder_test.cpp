@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "tables/random_tf.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "tables/brute_builder.hpp"
 
 namespace vri {

@@ -10,9 +10,9 @@
 #include <cstdio>
 
 #include "test_support.hpp"
-#include "vri/integrators/make_integrator.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/methods.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "test_support.hpp"
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "tables/discrete_tf.hpp"
 
 namespace vri {

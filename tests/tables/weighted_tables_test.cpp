@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "tables/random_tf.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "tables/brute_builder.hpp"
 #include "tables/incremental_builder.hpp"
 #include "tables/table_builder.hpp"

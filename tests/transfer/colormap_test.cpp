@@ -1,4 +1,4 @@
-// The named colour maps (vri/transfer/colormap.hpp) against their dense
+// The named colour maps (vri/transfer_function.hpp) against their dense
 // references: matplotlib's 256 entries, VTK's diverging "Cool to Warm",
 // ParaView's "Rainbow Uniform" (tests/data/tf/colormap_reference.json, written
 // by tools/make_colormaps.py from Debian's matplotlib and python3-vtk9).
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "vri/transfer/colormap.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri {
 namespace {

@@ -11,9 +11,9 @@
 #include <fstream>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/file_io.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
+#include "vri/scene.hpp"
 #include "transfer/paraview_colormap.hpp"
 
 namespace vri {

@@ -1,4 +1,4 @@
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 namespace {

@@ -6,8 +6,8 @@
 #include <optional>
 
 #include "verification/reference_integral.hpp"
-#include "vri/core/error.hpp"
-#include "vri/render/scene_renderer.hpp"
+#include "vri/error.hpp"
+#include "vri/render.hpp"
 
 namespace vri::verify {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "vri/camera/camera.hpp"
+#include "vri/camera.hpp"
 
 namespace vri::verify {
 

@@ -11,9 +11,9 @@
 // (e^-40 < 5e-18). So spikes of any width and extinctions up to 1e15 are
 // integrated as well as the linearisation allows. (At a fixed 0.01 voxel,
 // 500 points over the range left it 1.9e-3 from `exact`, 2.2e-4 at 0.0025.)
-#include "vri/core/rgba.hpp"
+#include "vri/geometry.hpp"
 #include "vri/image.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::verify {
 

@@ -1,4 +1,4 @@
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 
 #include "test_support.hpp"
 #include "volume/float_sampler.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
 #include "volume/builtin_volumes.hpp"
 
 namespace vri {

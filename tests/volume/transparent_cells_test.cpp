@@ -7,8 +7,8 @@
 #include <random>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
 #include "tables/zero_opacity.hpp"
 #include "volume/empty_space.hpp"
 #include "volume/macro_cells.hpp"

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstddef>
 
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::test {
 

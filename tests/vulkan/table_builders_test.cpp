@@ -18,8 +18,8 @@
 #include <string>
 
 #include "test_support.hpp"
-#include "vri/render/backend.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "tables/discrete_tf.hpp"
 #include "tables/incremental_builder.hpp"
 #include "tables/second_order_table.hpp"

@@ -6,7 +6,7 @@
 #include <sys/resource.h>
 
 #include "cli/cli_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "vulkan_device.hpp"
 
 namespace vri::test {

@@ -15,11 +15,10 @@
 
 #include "gpu_against_cpu.hpp"
 #include "test_support.hpp"
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene.hpp"
-#include "vri/scene/scene_overrides.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "volume/builtin_volumes.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "mesh/mesh_test_support.hpp"
 #include "vulkan_device.hpp"
 

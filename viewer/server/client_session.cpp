@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "server_limits.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::viewer {
 

@@ -8,10 +8,9 @@
 
 #include "core/json_support.hpp"
 #include "scene/scene_json.hpp"
-#include "vri/camera/framing.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
-#include "vri/volume/histogram.hpp"
+#include "vri/camera.hpp"
+#include "vri/error.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::viewer {
 

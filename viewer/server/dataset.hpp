@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::viewer {
 

@@ -9,8 +9,8 @@
 #include <memory>
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/io/png.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
 
 namespace vri::viewer {
 

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "vri/core/vec3.hpp"
+#include "vri/geometry.hpp"
 #include "vri/image.hpp"
 
 namespace vri::viewer {

@@ -4,8 +4,7 @@
 #include <cstring>
 
 #include "core/json_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 namespace vri::viewer {
 

@@ -7,8 +7,8 @@
 
 #include "frame_encoding.hpp"
 #include "transfer_presets.hpp"
-#include "vri/core/error.hpp"
-#include "vri/io/png.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
 #include "vri/methods.hpp"
 #include "vri/version.hpp"
 

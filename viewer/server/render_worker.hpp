@@ -20,15 +20,13 @@
 #include <thread>
 #include <vector>
 
-#include "vri/core/memory_limit.hpp"
-#include "vri/render/backend.hpp"
+#include "vri/memory.hpp"
+#include "vri/render.hpp"
 
 #include "dataset.hpp"
 #include "server_limits.hpp"
 #include "protocol.hpp"
-#include "vri/render/cancellation.hpp"
 #include "vri/image.hpp"
-#include "vri/render/scene_renderer.hpp"
 
 namespace vri::viewer {
 

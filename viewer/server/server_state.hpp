@@ -10,7 +10,7 @@
 
 #include "dataset.hpp"
 #include "worker_reaper.hpp"
-#include "vri/render/backend.hpp"
+#include "vri/render.hpp"
 
 namespace vri::viewer {
 

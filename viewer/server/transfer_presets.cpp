@@ -6,7 +6,7 @@
 
 #include "embedded_files.hpp"
 #include "scene/scene_json.hpp"
-#include "vri/transfer/colormap.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri::viewer {
 

@@ -1,11 +1,11 @@
 #pragma once
 // The named transfer functions the page offers: the bundled presets/*.json,
 // compiled into the binary, each as {"name", "transfer_function": {"points"}},
-// and, for one volume, the named colour maps (vri/transfer/colormap.hpp) over
+// and, for one volume, the named colour maps (vri/transfer_function.hpp) over
 // its data range.
 #include <nlohmann/json.hpp>
 
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::viewer {
 

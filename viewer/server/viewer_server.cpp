@@ -14,7 +14,7 @@
 #include "http_session.hpp"
 #include "server_limits.hpp"
 #include "server_state.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::viewer {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "server_limits.hpp"
-#include "vri/render/backend.hpp"
+#include "vri/render.hpp"
 
 namespace vri::viewer {
 

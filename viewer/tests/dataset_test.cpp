@@ -7,7 +7,7 @@
 
 #include <numeric>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::viewer {
 namespace {

@@ -13,8 +13,8 @@
 #include <fstream>
 #include <iterator>
 
-#include "vri/core/error.hpp"
-#include "vri/io/png.hpp"
+#include "vri/error.hpp"
+#include "vri/io.hpp"
 
 namespace vri::viewer {
 namespace {

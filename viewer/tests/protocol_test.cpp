@@ -6,7 +6,7 @@
 
 #include <cstring>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::viewer {
 namespace {

@@ -13,7 +13,7 @@
 #include <mutex>
 
 #include "frame_encoding.hpp"
-#include "vri/io/png.hpp"
+#include "vri/io.hpp"
 
 namespace vri::viewer {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::vulkan {
 

@@ -3,7 +3,7 @@
 #include <cstring>
 #include <utility>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::vulkan {
 

@@ -5,7 +5,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "volume/macro_cells.hpp"
 
 namespace vri::vulkan {

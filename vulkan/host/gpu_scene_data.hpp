@@ -13,7 +13,7 @@
 #include "shading/headlight_shader.hpp"
 #include "transfer/float_transfer_function.hpp"
 #include "volume/empty_space.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::vulkan {
 

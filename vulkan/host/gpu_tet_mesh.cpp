@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "mesh/boundary_bvh.hpp"
 #include "mesh/point_gradients.hpp"
 #include "mesh/tet_walk.hpp"

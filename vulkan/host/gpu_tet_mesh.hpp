@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "gpu_buffer.hpp"
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/volume.hpp"
 #include "mesh/tet_walk.hpp"
 
 namespace vri::vulkan {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "vri/core/memory_limit.hpp"
+#include "vri/memory.hpp"
 
 namespace vri::vulkan {
 

@@ -13,7 +13,7 @@
 
 #include "compute_kernel.hpp"
 #include "vri/image.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::vulkan {
 

@@ -8,7 +8,7 @@
 #include <iostream>
 #include <string>
 
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri::vulkan {
 

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "gpu_scene_data.hpp"
-#include "vri/render/backend.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri::vulkan {
 

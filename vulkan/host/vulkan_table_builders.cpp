@@ -8,7 +8,7 @@
 
 #include "gpu_array.hpp"
 #include "gpu_discrete_tf.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "tables/incremental_builder.hpp"
 #include "tables/second_order_weighted.hpp"
 

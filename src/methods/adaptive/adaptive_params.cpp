@@ -2,8 +2,7 @@
 
 #include "adaptive_guaranteed.hpp"
 #include "adaptive_simpson.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/integrators/method_spec.hpp"
+#include "vri/methods.hpp"
 
 namespace vri {
 

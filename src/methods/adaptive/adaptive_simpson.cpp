@@ -5,7 +5,7 @@
 
 #include "methods/march/early_stop.hpp"
 #include "simpson_colour_step.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "volume/empty_space.hpp"
 
 namespace vri {

@@ -38,11 +38,11 @@
 #include <optional>
 
 #include "adaptive_params.hpp"
-#include "vri/integrators/error_estimating_integrator.hpp"
+#include "vri/methods.hpp"
 #include "methods/fast_path.hpp"
 #include "shading/headlight_shader.hpp"
-#include "vri/transfer/transfer_function.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/transfer_function.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -7,7 +7,7 @@
 #include <cstddef>
 
 #include "volume/cell_traversal.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

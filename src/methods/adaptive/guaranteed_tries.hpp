@@ -10,7 +10,7 @@
 // order, on the samples seg.at(s(u + h k / 4)): the same bytes as one piece
 // at a time.
 #include "methods/exact/cubic.hpp"
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri::simpson5 {
 

@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "simpson5.hpp"
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri::simpson5 {
 

@@ -7,7 +7,7 @@
 #include "pixel_kernel.hpp"
 #include "methods/march/ray_setup.hpp"
 #include "vulkan_adaptive.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "adaptive_params.hpp"
 #include "methods/fast_path.hpp"
 #include "tables/zero_opacity.hpp"

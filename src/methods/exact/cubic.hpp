@@ -5,10 +5,10 @@
 #include <cmath>
 #include <utility>
 
-#include "vri/core/vec3.hpp"
+#include "vri/geometry.hpp"
 #include "volume/cell_traversal.hpp"
 #include "volume/gradient_field.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

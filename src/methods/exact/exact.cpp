@@ -6,8 +6,7 @@
 
 #include "cubic.hpp"
 #include "methods/march/early_stop.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

@@ -21,13 +21,12 @@
 #include <optional>
 
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/integrators/method_spec.hpp"
-#include "vri/integrators/integrator.hpp"
+#include "vri/methods.hpp"
 #include "piece_integrator.hpp"
 #include "shading/headlight_shader.hpp"
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 #include "volume/cell_traversal.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -13,8 +13,7 @@
 #include <optional>
 
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/integrators/method_spec.hpp"
-#include "vri/integrators/integrator.hpp"
+#include "vri/methods.hpp"
 #include "piece_integrator.hpp"
 #include "mesh/point_gradients.hpp"
 #include "mesh/tet_walk.hpp"

@@ -8,7 +8,7 @@
 #include "cubic.hpp"
 #include "gauss_kronrod.hpp"
 #include "tf_pieces.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

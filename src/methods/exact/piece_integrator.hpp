@@ -9,9 +9,9 @@
 // absolute budget of error_per_length per unit of ray length.
 #include <memory>
 
-#include "vri/core/vec3.hpp"
+#include "vri/geometry.hpp"
 #include "shading/headlight_shader.hpp"
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri {
 

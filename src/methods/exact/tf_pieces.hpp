@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cubic.hpp"
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri {
 

@@ -12,14 +12,13 @@
 #include "methods/preint/float_march.hpp"
 #include "float_shading.hpp"
 #include "ray_steps.hpp"
-#include "vri/core/ray.hpp"
-#include "vri/core/rgba.hpp"
+#include "vri/geometry.hpp"
 #include "tables/discrete_tf.hpp"
 #include "tables/float_lookup.hpp"
 #include "tables/second_order_float_lookup.hpp"
 #include "transfer/float_transfer_function.hpp"
 #include "volume/float_sampler.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::detail {
 

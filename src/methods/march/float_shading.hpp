@@ -10,9 +10,9 @@
 #include <cmath>
 
 #include "float_math.hpp"
-#include "vri/core/ray.hpp"
+#include "vri/geometry.hpp"
 #include "shading/headlight_shader.hpp"
-#include "vri/shading/lighting.hpp"
+#include "vri/lighting.hpp"
 #include "volume/float_sampler.hpp"
 
 namespace vri::detail {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "methods/riemann/float_riemann.hpp"  // riemann_samples, jitter_fraction
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "tables/slab_integral.hpp"
 #include "volume/float_sampler.hpp"
 

@@ -11,11 +11,10 @@
 #include <vector>
 
 #include "pixel_kernel.hpp"  // PixelSpan
-#include "vri/camera/camera.hpp"
+#include "vri/camera.hpp"
 #include "methods/preint/float_march.hpp"  // FloatLighting, last_slabs
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/volume.hpp"
 #include "tables/discrete_tf.hpp"
-#include "vri/volume/grid_volume.hpp"
 
 namespace vri::vulkan {
 

@@ -22,13 +22,11 @@
 #include <optional>
 #include <string>
 
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
-#include "vri/core/ray.hpp"
-#include "vri/core/rgba.hpp"
+#include "vri/error.hpp"
+#include "vri/geometry.hpp"
 #include "volume/empty_space.hpp"
 #include "volume/float_sampler.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 #include "volume/transparent_cells.hpp"
 
 namespace vri::detail {

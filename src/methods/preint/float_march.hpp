@@ -24,8 +24,7 @@
 
 #include "methods/march/float_shading.hpp"
 #include "methods/march/ray_steps.hpp"
-#include "vri/core/ray.hpp"
-#include "vri/core/rgba.hpp"
+#include "vri/geometry.hpp"
 #include "shading/lit_slab.hpp"
 #include "tables/float_lookup.hpp"
 #include "tables/slab_integral.hpp"

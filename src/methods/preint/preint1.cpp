@@ -4,7 +4,7 @@
 #include "methods/march/float_packet.hpp"
 #include "methods/march/float_shading.hpp"
 #include "slab_policies.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "tables/slab_integral.hpp"
 #include "tables/table_builder.hpp"
 

@@ -24,15 +24,15 @@
 
 #include "methods/fast_path.hpp"
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/integrators/integrator.hpp"
+#include "vri/methods.hpp"
 #include "shading/headlight_shader.hpp"
-#include "vri/shading/lighting.hpp"
+#include "vri/lighting.hpp"
 #include "tables/discrete_tf.hpp"
 #include "tables/float_lookup.hpp"
 #include "tables/preintegration_table.hpp"
 #include "tables/weighted_tables.hpp"
 #include "volume/float_sampler.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -6,7 +6,7 @@
 #include "methods/march/float_packet.hpp"
 #include "methods/march/float_shading.hpp"
 #include "slab_policies.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

@@ -14,7 +14,7 @@
 #include <utility>
 
 #include "methods/march/ray_steps.hpp"
-#include "vri/core/rgba.hpp"
+#include "vri/geometry.hpp"
 #include "shading/headlight_shader.hpp"
 #include "shading/lit_slab.hpp"
 #include "tables/second_order_weighted.hpp"

@@ -7,7 +7,7 @@
 #include "methods/march/ray_steps.hpp"  // world_step
 #include "pixel_kernel.hpp"
 #include "methods/march/ray_setup.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "methods/fast_path.hpp"
 #include "preint2.hpp"  // second_order_builder_name
 #include "tables/zero_opacity.hpp"

@@ -13,13 +13,13 @@
 #include "methods/preint/float_march.hpp"
 #include "methods/march/float_shading.hpp"
 #include "methods/march/ray_steps.hpp"
-#include "vri/core/ray.hpp"
+#include "vri/geometry.hpp"
 #include "tables/second_order_float_lookup.hpp"
 #include "tables/slab_table.hpp"
 #include "tables/zero_spots.hpp"
 #include "volume/cell_traversal.hpp"
 #include "volume/empty_space.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri::detail {
 

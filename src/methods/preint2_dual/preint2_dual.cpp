@@ -8,7 +8,7 @@
 #include "methods/march/float_packet.hpp"
 #include "methods/preint/slab_policies.hpp"
 #include "methods/march/ray_steps.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "volume/cell_traversal.hpp"
 
 namespace vri {

@@ -36,14 +36,14 @@
 
 #include "methods/fast_path.hpp"
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/integrators/integrator.hpp"
+#include "vri/methods.hpp"
 #include "shading/headlight_shader.hpp"
-#include "vri/shading/lighting.hpp"
+#include "vri/lighting.hpp"
 #include "tables/discrete_tf.hpp"
 #include "tables/second_order_table.hpp"
 #include "tables/second_order_weighted.hpp"
 #include "volume/float_sampler.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 #include "volume/transparent_cells.hpp"
 
 namespace vri {

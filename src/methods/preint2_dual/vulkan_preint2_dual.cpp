@@ -5,7 +5,7 @@
 
 #include "pixel_kernel.hpp"
 #include "methods/march/ray_setup.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "methods/fast_path.hpp"
 #include "methods/preint/preint2.hpp"  // second_order_builder_name
 #include "preint2_dual.hpp"

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "vri/core/charged_vector.hpp"
-#include "vri/core/error.hpp"
+#include "vri/memory.hpp"
+#include "vri/error.hpp"
 #include "classify.hpp"
 #include "shading/chord_lighting.hpp"
 #include "tables/cylindrical_table.hpp"

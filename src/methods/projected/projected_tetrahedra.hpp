@@ -24,11 +24,11 @@
 // Lit (SPEC §5): each fragment's chord from front to back point is lit by
 // ChordLighting: one normal (mode `sampled`), or the shading at both ends
 // weighting the weighted tables (mode `interpolated`).
-#include "vri/camera/camera.hpp"
-#include "vri/mesh/tet_mesh.hpp"
+#include "vri/camera.hpp"
+#include "vri/volume.hpp"
 #include "vri/image.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/shading/lighting.hpp"
+#include "vri/render.hpp"
+#include "vri/lighting.hpp"
 #include "tables/cylindrical_table.hpp"
 #include "tables/slab_table.hpp"
 #include "tables/weighted_tables.hpp"

@@ -6,8 +6,7 @@
 
 #include "methods/march/float_packet.hpp"
 #include "float_riemann.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/printable.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

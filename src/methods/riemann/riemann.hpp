@@ -26,12 +26,12 @@
 
 #include "methods/fast_path.hpp"
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/integrators/integrator.hpp"
+#include "vri/methods.hpp"
 #include "shading/headlight_shader.hpp"
 #include "transfer/float_transfer_function.hpp"
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 #include "volume/float_sampler.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/volume.hpp"
 
 namespace vri {
 

@@ -1,7 +1,7 @@
 #include "tet_raycast.hpp"
 
 #include "methods/mesh_tables.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 
 namespace vri {
 

@@ -11,8 +11,7 @@
 #include <optional>
 
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/integrators/method_spec.hpp"
-#include "vri/integrators/integrator.hpp"
+#include "vri/methods.hpp"
 #include "mesh/tet_walk.hpp"
 #include "shading/chord_lighting.hpp"
 #include "tables/slab_table.hpp"

@@ -6,7 +6,7 @@
 
 #include "pixel_kernel.hpp"
 #include "methods/march/ray_setup.hpp"
-#include "vri/integrators/make_integrator.hpp"
+#include "vri/methods.hpp"
 #include "methods/mesh_tables.hpp"
 #include "mesh/point_gradients.hpp"
 #include "shading/headlight_shader.hpp"

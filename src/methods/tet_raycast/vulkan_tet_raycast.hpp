@@ -12,8 +12,8 @@
 #include "gpu_array.hpp"
 #include "gpu_scene_data.hpp"  // ShadingParams
 #include "gpu_tet_mesh.hpp"
-#include "vri/render/backend.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "tables/discrete_tf.hpp"
 
 namespace vri::vulkan {

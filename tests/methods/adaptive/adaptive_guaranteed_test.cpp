@@ -10,10 +10,10 @@
 #include <string>
 
 #include "test_support.hpp"
-#include "vri/camera/camera.hpp"
+#include "vri/camera.hpp"
 #include "methods/adaptive/adaptive_guaranteed.hpp"
 #include "methods/exact/exact.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/scene.hpp"
 #include "volume/builtin_volumes.hpp"
 
 namespace vri {

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <random>
 
-#include "vri/camera/camera.hpp"
-#include "vri/core/error.hpp"
+#include "vri/camera.hpp"
+#include "vri/error.hpp"
 #include "methods/adaptive/adaptive_guaranteed.hpp"
 #include "methods/adaptive/adaptive_simpson.hpp"
 #include "methods/exact/exact.hpp"
-#include "vri/integrators/make_integrator.hpp"
+#include "vri/methods.hpp"
 #include "volume/builtin_volumes.hpp"
 
 namespace vri {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "methods/exact/exact.hpp"
 #include "methods/exact/piece_integrator.hpp"
 

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "methods/riemann/riemann.hpp"
 #include "volume/builtin_volumes.hpp"
 

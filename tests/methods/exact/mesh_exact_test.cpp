@@ -7,9 +7,9 @@
 #include <random>
 
 #include "mesh/mesh_test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "methods/exact/exact.hpp"
-#include "vri/render/renderer.hpp"
+#include "vri/render.hpp"
 
 namespace vri {
 namespace {

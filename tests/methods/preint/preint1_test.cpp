@@ -6,11 +6,10 @@
 #include <string>
 
 #include "methods/bucky_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/integrators/make_integrator.hpp"
-#include "vri/render/image_compare.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/error.hpp"
+#include "vri/methods.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "test_support.hpp"
-#include "vri/integrators/make_integrator.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/methods.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

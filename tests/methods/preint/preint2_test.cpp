@@ -8,13 +8,12 @@
 
 #include "methods/bucky_support.hpp"
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "methods/exact/exact.hpp"
-#include "vri/integrators/make_integrator.hpp"
+#include "vri/methods.hpp"
 #include "methods/preint2_dual/preint2_dual.hpp"
-#include "vri/render/image_compare.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 
 namespace vri {
 namespace {

@@ -17,7 +17,7 @@
 #include "tables/discrete_tf.hpp"
 #include "tables/second_order_table.hpp"
 #include "tables/zero_opacity.hpp"
-#include "vri/transfer/transfer_function.hpp"
+#include "vri/transfer_function.hpp"
 
 namespace vri {
 namespace {

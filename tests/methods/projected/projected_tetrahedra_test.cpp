@@ -6,8 +6,8 @@
 #include <cstring>
 
 #include "mesh/mesh_test_support.hpp"
-#include "vri/core/error.hpp"
-#include "vri/core/memory_limit.hpp"
+#include "vri/error.hpp"
+#include "vri/memory.hpp"
 #include "methods/exact/mesh_exact.hpp"
 #include "methods/tet_raycast/tet_raycast.hpp"
 #include "io/vtk_legacy.hpp"

@@ -13,12 +13,12 @@
 
 #include "methods/riemann/float_riemann.hpp"  // jitter_fraction
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "methods/exact/exact.hpp"
-#include "vri/integrators/make_integrator.hpp"
+#include "vri/methods.hpp"
 #include "methods/riemann/riemann.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "volume/builtin_volumes.hpp"
 
 namespace vri {

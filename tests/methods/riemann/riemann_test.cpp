@@ -6,10 +6,10 @@
 #include <cstdio>
 
 #include "test_support.hpp"
-#include "vri/core/error.hpp"
+#include "vri/error.hpp"
 #include "methods/exact/exact.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "volume/builtin_volumes.hpp"
 
 namespace vri {

@@ -6,14 +6,13 @@
 #include <cstring>
 
 #include "mesh/mesh_test_support.hpp"
-#include "vri/camera/camera.hpp"
-#include "vri/core/error.hpp"
+#include "vri/camera.hpp"
+#include "vri/error.hpp"
 #include "methods/exact/mesh_exact.hpp"
 #include "io/vtk_legacy.hpp"
 #include "tables/length_table_support.hpp"
-#include "vri/render/renderer.hpp"
-#include "vri/render/scene_renderer.hpp"
-#include "vri/scene/scene.hpp"
+#include "vri/render.hpp"
+#include "vri/scene.hpp"
 #include "test_support.hpp"
 #include "tables/incremental_builder.hpp"
 #include "tables/weighted_tables.hpp"

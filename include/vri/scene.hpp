@@ -1,5 +1,6 @@
 #pragma once
-// Scene: everything one render needs (SPEC §8), loaded from a JSON file.
+// vri/scene.hpp: the scene file of SPEC §5 as a value, and the command line's overrides of it.
+
 #include <array>
 #include <filesystem>
 #include <functional>
@@ -7,14 +8,17 @@
 #include <string_view>
 #include <utility>
 #include <variant>
+#include <cstdint>
+#include <optional>
 
-#include "vri/camera/camera.hpp"
-#include "vri/integrators/method_spec.hpp"
-#include "vri/volume/grid_part.hpp"
-#include "vri/mesh/tet_mesh.hpp"
-#include "vri/shading/lighting.hpp"
-#include "vri/transfer/transfer_function.hpp"
-#include "vri/volume/grid_volume.hpp"
+#include "vri/camera.hpp"
+#include "vri/methods.hpp"
+#include "vri/volume.hpp"
+#include "vri/lighting.hpp"
+#include "vri/transfer_function.hpp"
+
+// ---- scene -----------------------------------------------------------------
+// Scene: everything one render needs (SPEC §8), loaded from a JSON file.
 
 namespace vri {
 
@@ -77,5 +81,36 @@ TransferFunction parse_transfer_function(std::string_view json_text, const std::
                                          const Volume* volume = nullptr, const std::filesystem::path& base_dir = ".");
 // A "camera" block on its own (SPEC §6), checked as in a scene; errors name `source_name`: camera.
 CameraSpec parse_camera(std::string_view json_text, const std::string& source_name = "scene");
+
+}  // namespace vri
+
+// ---- scene_overrides -------------------------------------------------------
+// SceneOverrides: what a caller changes in a loaded scene before rendering it
+// (the `vri render` flags, the keyword arguments of the Python vri.render).
+// One place applies them, so both front ends follow the same rules.
+
+namespace vri {
+
+struct SceneOverrides {
+  std::optional<std::string> method, strategy;
+  std::optional<double> step, tolerance, termination, max_samples, max_work, h0, hmin, hmax;
+  std::optional<int> table_size, iterations, width, height;
+  std::optional<bool> skip_empty, float_math;
+  std::optional<std::uint64_t> jitter;  // riemann: the jitter's seed
+  // The camera (issue 20): `fit` frames the volume's box (framing.hpp), then
+  // VTK's motions in degrees and the zoom factor.
+  std::optional<bool> fit;
+  std::optional<double> azimuth, elevation, roll, zoom;
+};
+
+// Sets every given field; the camera's size first, then the fit, then the motions. A method other than the scene's drops the scene's
+// table_size (it was chosen for the scene's own method: preint2-dual then
+// keeps its default, 64) unless table_size is given too.
+void apply_overrides(Scene& scene, const SceneOverrides& overrides);
+
+// The method's part of apply_overrides, alone: what a rank of a distributed
+// render applies to the scene's method to choose its ghost layer while the
+// scene is still loading.
+void apply_method_overrides(MethodSpec& method, const SceneOverrides& overrides);
 
 }  // namespace vri

@@ -1,4 +1,44 @@
 #pragma once
+// vri/volume.hpp: what is rendered: regular grids (their scalar types, parts and histogram) and tetrahedral meshes.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+#include <algorithm>
+#include <array>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <utility>
+#include <variant>
+
+#include "vri/geometry.hpp"
+#include "vri/transfer_function.hpp"
+#include "vri/memory.hpp"
+
+// ---- scalar_type -----------------------------------------------------------
+// ScalarType: the binary sample types vri reads, and their conversion to float.
+
+namespace vri {
+
+enum class ScalarType { UInt8, Int8, UInt16, Int16, UInt32, Int32, Float32, Float64 };
+enum class Endian { Little, Big };
+
+// SPEC names: uint8, uint16, int16, float32; also int8, uint32, int32, float64.
+// Throws vri::Error for an unknown name.
+ScalarType parse_scalar_type(const std::string& name);
+std::string scalar_type_name(ScalarType type);
+std::size_t scalar_type_size(ScalarType type);
+
+// Converts `count` packed samples to float. Throws if `bytes` is too short.
+std::vector<float> decode_samples(std::span<const std::byte> bytes, ScalarType type,
+                                  Endian endian, std::uint64_t count);
+
+}  // namespace vri
+
+// ---- grid_volume -----------------------------------------------------------
 // GridVolume: a scalar field on nx*ny*nz points, x fastest, trilinear between
 // samples; the medium is the closed box B of SPEC §1. The samples keep the
 // file's own type for uint8, uint16 and int16 (1 or 2 bytes a sample: a 512³
@@ -7,21 +47,6 @@
 // Hot loops dispatch on the type once (visit) and read typed samples.
 // The samples are immutable and shared: a copy of a GridVolume shares them,
 // and a volume may view memory it does not own (a numpy array from Python).
-#include <algorithm>
-#include <array>
-#include <cstddef>
-#include <cstdint>
-#include <functional>
-#include <memory>
-#include <optional>
-#include <span>
-#include <utility>
-#include <variant>
-#include <vector>
-
-#include "vri/core/ray.hpp"
-#include "vri/core/vec3.hpp"
-#include "vri/volume/scalar_type.hpp"
 
 namespace vri {
 
@@ -201,5 +226,126 @@ double GridVolume::sample_grid(const T* values, Vec3 u) const {
   const double c1 = c01 + f[1] * (c11 - c01);
   return c0 + f[2] * (c1 - c0);
 }
+
+}  // namespace vri
+
+// ---- grid_part -------------------------------------------------------------
+// A part of a grid (distributed rendering: one rank's brick, docs/
+// DISTRIBUTED.md): the points lo..hi (inclusive) on each axis, and the
+// volume that holds them as a part of the whole grid (GridVolume::Brick).
+// Readers take a RegionChooser and read the part alone (io/grid_region.hpp).
+
+namespace vri {
+
+struct GridRegion {
+  std::array<int, 3> lo, hi;  // grid points, inclusive
+  std::array<int, 3> dims() const { return {hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1}; }
+  std::uint64_t points() const {
+    const auto d = dims();
+    return std::uint64_t(d[0]) * d[1] * d[2];
+  }
+};
+
+// Chooses the region of a grid of `dims` points, once a reader knows them.
+using RegionChooser = std::function<GridRegion(std::array<int, 3> dims)>;
+
+// Throws vri::Error unless `region` lies in a grid of `dims` with 2 points a side at least.
+void check_region(const GridRegion& region, std::array<int, 3> dims);
+
+// The region's samples as a part of a grid of `whole_dims` points
+// (GridVolume::Brick) owning all its cells until told otherwise, with the
+// whole grid's spacing and origin; min and max its own until the whole
+// grid's are known.
+GridVolume make_part(GridVolume::Samples samples, std::array<int, 3> whole_dims, const GridRegion& region,
+                     Vec3 spacing = {1, 1, 1}, Vec3 whole_origin = {0, 0, 0});
+
+// The region of a volume in memory, as a part of it (make_part).
+GridVolume cut_region(const GridVolume& volume, const GridRegion& region);
+
+}  // namespace vri
+
+// ---- histogram -------------------------------------------------------------
+// The histogram of a volume's scalars, and the transfer function it suggests:
+// what `vri info` prints and what the viewer draws its editor over.
+
+namespace vri {
+
+struct Histogram {
+  double lo = 0, hi = 0;               // the scalar range; bin i covers lo + i (hi - lo) / bins
+  std::vector<std::uint64_t> counts;  // the maximum falls in the last bin
+};
+
+Histogram histogram(const GridVolume& volume, int bins = 256);
+Histogram histogram(std::span<const float> scalars, int bins = 256);
+
+// A first transfer function for a volume never seen: transparent up to just
+// above the background - the most common value when it lies in the lowest
+// quarter of the range, where CT and MRI backgrounds lie - then a blue ->
+// orange -> white ramp whose densest value stops half the light over a tenth
+// of `diagonal` (the box's diagonal, world units).
+TransferFunction suggest_transfer_function(const Histogram& h, double diagonal);
+
+}  // namespace vri
+
+// ---- tet_mesh --------------------------------------------------------------
+// TetMesh (SPEC §2): points with one scalar each and tetrahedra of four point
+// indices; the field is linear inside each tetrahedron and the medium is the
+// union of the tetrahedra (it may be non-convex and have holes).
+//
+// Construction checks and normalises the input once, so every consumer can
+// rely on it:
+//  - a point index out of range, a non-finite coordinate or scalar (NaN
+//    included) is refused with vri::Error naming the tetrahedron or point;
+//  - inverted tetrahedra (negative signed volume) are reoriented by swapping
+//    two vertices, so every kept tetrahedron has det[b-a, c-a, d-a] > 0;
+//  - degenerate tetrahedra (|volume| <= 1e-12 * (longest edge)^3: flat or
+//    with repeated points) hold no medium and are dropped; dropped() counts them;
+//  - a face shared by more than two tetrahedra is refused (not a 3-manifold).
+// Face f of a tetrahedron is the one opposite its vertex f; neighbor(t, f) is
+// the tetrahedron across it, or -1 on the boundary.
+
+namespace vri {
+
+class TetMesh {
+ public:
+  using Tet = std::array<std::int32_t, 4>;
+
+  TetMesh(std::vector<Vec3> points, std::vector<Tet> tets, std::vector<float> scalars);
+  // The bytes a mesh of this size holds (and charges to the memory budget).
+  static std::uint64_t bytes_for(std::uint64_t points, std::uint64_t tets) {
+    return points * (sizeof(Vec3) + sizeof(float)) + tets * (sizeof(Tet) + 4 * sizeof(std::int32_t));
+  }
+
+  const std::vector<Vec3>& points() const { return points_; }
+  const std::vector<Tet>& tets() const { return tets_; }
+  const std::vector<float>& scalars() const { return scalars_; }
+  std::size_t size() const { return tets_.size(); }
+  std::size_t dropped() const { return dropped_; }
+
+  std::int32_t neighbor(std::size_t tet, int face) const { return neighbors_[4 * tet + face]; }
+  // The three vertices of face f (opposite vertex f), ordered so that their
+  // normal (b-a) x (c-a) points out of the tetrahedron.
+  std::array<std::int32_t, 3> face(std::size_t tet, int face) const;
+
+  Vec3 box_lo() const { return lo_; }
+  Vec3 box_hi() const { return hi_; }
+  float min_value() const { return min_; }
+  float max_value() const { return max_; }
+  // Mean length over the distinct edges: the mesh's voxel unit (SPEC §2).
+  double mean_edge_length() const { return mean_edge_; }
+  // Longest edge: no straight segment inside one tetrahedron is longer.
+  double max_edge_length() const { return max_edge_; }
+
+ private:
+  std::vector<Vec3> points_;
+  std::vector<Tet> tets_;
+  std::vector<float> scalars_;
+  std::vector<std::int32_t> neighbors_;
+  MemoryCharge charge_;  // the arrays above, held against the process's budget
+  std::size_t dropped_ = 0;
+  Vec3 lo_, hi_;
+  float min_ = 0, max_ = 0;
+  double mean_edge_ = 0, max_edge_ = 0;
+};
 
 }  // namespace vri

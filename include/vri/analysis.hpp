@@ -1,4 +1,15 @@
 #pragma once
+// vri/analysis.hpp: what one ray or pixel sees: the signal along it and its plot.
+
+#include <optional>
+#include <vector>
+#include <string>
+
+#include "vri/geometry.hpp"
+#include "vri/volume.hpp"
+#include "vri/scene.hpp"
+
+// ---- ray_signal ------------------------------------------------------------
 // RaySignal: the trilinear scalar signal along one ray and its piecewise
 // polynomial approximations of order 0, 1 and 2 from the same samples, with
 // the error xi = int |signal - approximation| dt of each (El Hajjar et al.
@@ -13,11 +24,6 @@
 //   order 1: linear between consecutive samples (trapezoid rule);
 //   order 2: the Lagrange parabola through samples 2j, 2j+1, 2j+2 (Simpson's
 //            rule); with an odd number of intervals the last is linear.
-#include <optional>
-#include <vector>
-
-#include "vri/core/ray.hpp"
-#include "vri/volume/grid_volume.hpp"
 
 namespace vri {
 
@@ -43,5 +49,39 @@ class RaySignal {
   std::vector<double> t_, s_;
   std::size_t interval(double t) const;  // k with t_k <= t <= t_{k+1}
 };
+
+}  // namespace vri
+
+// ---- pixel_signal ----------------------------------------------------------
+// The scalar signal along one pixel's ray of a scene and its approximations
+// (RaySignal) as the rows `vri ray` writes and the Python vri.ray returns.
+
+namespace vri {
+
+// The ray through pixel (px, py) of the scene's camera, sampled every
+// `step` voxel units (>= 1e-4) or, without one, at cell faces and midpoints.
+// vri::Error for a pixel outside the image, a bad step or a mesh scene.
+// Refers to the scene's volume: keep the scene alive.
+RaySignal pixel_signal(const Scene& scene, int px, int py, std::optional<double> step);
+
+struct RaySignalRow {
+  double t, signal, order[3];
+  bool is_sample;
+};
+
+// Each sample interval at `rows_per_interval` evenly spaced t (the first one
+// the sample itself), then the last sample.
+std::vector<RaySignalRow> signal_rows(const RaySignal& signal, int rows_per_interval = 8);
+
+}  // namespace vri
+
+// ---- ray_plot --------------------------------------------------------------
+// An SVG figure of a RaySignal in the manner of El Hajjar et al.'s Figures 1,
+// 2, 4 and 5: one panel per order, the signal in black, the approximation in
+// red, their difference shaded green, the samples as dots and xi written.
+
+namespace vri {
+
+std::string ray_signal_svg(const RaySignal& signal);
 
 }  // namespace vri

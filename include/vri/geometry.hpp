@@ -1,10 +1,49 @@
 #pragma once
-// Ray: x(t) = origin + t * dir with |dir| = 1, so t is world distance (SPEC §4).
+// vri/geometry.hpp: Vec3, Rgba, Ray and Interval: the small value types every part shares.
+
+#include <cmath>
+#include <array>
 #include <limits>
 #include <optional>
 #include <vector>
 
-#include "vri/core/vec3.hpp"
+// ---- vec3 ------------------------------------------------------------------
+// Vec3: the double-precision 3-vector used for points, directions and spacings.
+
+namespace vri {
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+
+  constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+  constexpr double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+};
+
+constexpr Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+constexpr Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+constexpr Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
+constexpr Vec3 operator*(Vec3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+constexpr Vec3 operator*(double s, Vec3 a) { return a * s; }
+constexpr double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr Vec3 cross(Vec3 a, Vec3 b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline double length(Vec3 a) { return std::sqrt(dot(a, a)); }
+inline Vec3 normalize(Vec3 a) { return a * (1.0 / length(a)); }
+
+}  // namespace vri
+
+// ---- rgba ------------------------------------------------------------------
+// Rgba: one pixel's premultiplied (C, alpha) of SPEC §4, in double precision.
+
+namespace vri {
+
+using Rgba = std::array<double, 4>;
+
+}  // namespace vri
+
+// ---- ray -------------------------------------------------------------------
+// Ray: x(t) = origin + t * dir with |dir| = 1, so t is world distance (SPEC §4).
 
 namespace vri {
 
