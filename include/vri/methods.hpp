@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <memory>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -74,6 +75,27 @@ struct MethodSpec {
   // riemann.hpp), against wood-grain rings; none: no jitter.
   std::optional<std::uint64_t> jitter{};
 };
+
+// The numeric parameters of a method block (SPEC §8), each with one rule,
+// checked in one place for a scene file, a command-line flag, a viewer
+// message and a Python keyword alike (issue 47): the same value is refused in
+// the same words wherever it comes from.
+struct MethodParameter {
+  std::string_view key;     // method.<key> in a scene
+  std::string_view flag;    // the command line's, or empty (a scene key only)
+  std::string_view expects; // the rule in words: "a finite number > 0"
+  bool (*holds)(double);    // the rule
+};
+
+// Every numeric parameter of MethodSpec, in its order.
+std::span<const MethodParameter> method_parameters();
+
+// vri::Error "method.<key> (<flag>): expected <rule>, found <value>" unless
+// `value` keeps the rule of parameter `key` (one of method_parameters()).
+void check_method_parameter(std::string_view key, double value);
+
+// check_method_parameter for each numeric parameter of `method`.
+void check_method_parameters(const MethodSpec& method);
 
 }  // namespace vri
 

@@ -245,10 +245,6 @@ inline constexpr int kMaxThreads = 1024;
 // --threads in [0, kMaxThreads]; vri::Error beyond.
 int checked_threads(int threads);
 
-// Steps, tolerances and sizes of the method: finite and > 0, each error
-// naming the flag and the scene key.
-void check_method_parameters(const MethodSpec& method);
-
 // Samples per ray and in all, estimated from the step and the volume's
 // diagonal; vri::Error saying how to raise the cap when over it.
 void check_work(const Scene& scene, const Camera& camera);

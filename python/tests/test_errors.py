@@ -53,6 +53,18 @@ def test_jitter_is_checked_as_the_cli_checks_it(root, run_cli, tmp_path):
         vri.render(scene, method="riemann", jitter=2**53 + 1)
 
 
+def test_method_parameters_are_checked_as_the_cli_and_the_scene_check_them(root, run_cli, tmp_path):
+    scene = root / "scenes" / "neghip.json"
+    for key, value, rule in [("table_size", 1, "an integer in [2, 4096]"), ("step", -1, "a finite number > 0"),
+                             ("iterations", 5000, "an integer in [1, 4096]")]:
+        flag = "--" + key.replace("_", "-")
+        expected = f"method.{key} ({flag}): expected {rule}, found {value}"
+        assert expected in cli_error(run_cli, "render", scene, "-o", tmp_path / "x.npy", flag, str(value))
+        with pytest.raises(ValueError) as raised:
+            vri.render(scene, **{key: value})
+        assert expected in str(raised.value)
+
+
 def test_work_cap_and_threads(root):
     with pytest.raises(ValueError, match="samples per ray"):
         vri.render(root / "scenes" / "neghip.json", method="riemann", step=1e-6)

@@ -62,18 +62,6 @@ int checked_threads(int threads) {
   return threads;
 }
 
-void check_method_parameters(const MethodSpec& m) {
-  const std::pair<const char*, double> values[] = {
-      {"step", m.step}, {"tolerance", m.tolerance}, {"h0", m.h0}, {"hmin", m.hmin}, {"hmax", m.hmax}};
-  for (const auto& [key, v] : values)
-    if (!(v > 0) || !std::isfinite(v))
-      throw Error(std::string("--") + key + " (scene method." + key + "): expected a finite number > 0, found " + g(v));
-  if (!std::isfinite(m.fast.termination))
-    throw Error("--termination (scene method.termination): expected a finite number, found " + g(m.fast.termination));
-  if (!(m.max_samples >= 1) || !(m.max_work >= 1))
-    throw Error("--max-samples and --max-work: expected numbers >= 1");
-}
-
 void check_work(const Scene& scene, const Camera& camera) {
   const MethodSpec& m = scene.method;
   const Bounds b = bounds_of(scene);

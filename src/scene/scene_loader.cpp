@@ -324,10 +324,16 @@ CameraSpec place_camera(const CameraRequest& q, const Volume* volume, const Read
   }
 }
 
-// A step, tolerance or size: finite and > 0 (issue 17: `inf` read out of bounds).
-double positive(const Reader& r, const json& j, const char* key, double def) {
-  const double v = r.number(j, key, def);
-  if (!(v > 0)) r.expected(key, "a number > 0", j.at(key));
+// A numeric method parameter: a finite JSON number, then its one rule
+// (check_method_parameter, vri/methods.hpp), before any cast to an integer.
+double parameter(const Reader& m, const json& mj, const char* key, double def) {
+  if (!mj.contains(key)) return def;
+  const double v = m.number(mj, key);
+  try {
+    check_method_parameter(key, v);
+  } catch (const Error& e) {
+    throw Error(m.file + ": " + e.what());
+  }
   return v;
 }
 
@@ -339,16 +345,16 @@ MethodSpec method_from(const json& mj, const Reader& top) {
                "jitter"});
   MethodSpec method;
   method.name = m.string(mj, "name", "exact");
-  method.step = positive(m, mj, "step", method.step);
-  method.tolerance = positive(m, mj, "tolerance", method.tolerance);
-  method.table_size = m.integer(mj, "table_size", method.table_size);
+  method.step = parameter(m, mj, "step", method.step);
+  method.tolerance = parameter(m, mj, "tolerance", method.tolerance);
+  method.table_size = int(parameter(m, mj, "table_size", method.table_size));
   method.table_size_given = mj.contains("table_size");
-  method.length_samples = m.integer(mj, "length_samples", method.length_samples);
-  method.planes = m.integer(mj, "planes", method.planes);
-  method.iterations = int(m.integer_in(mj, "iterations", 1, kMaxSecondOrderIterations, method.iterations));
-  method.h0 = positive(m, mj, "h0", method.h0);
-  method.hmin = positive(m, mj, "hmin", method.hmin);
-  method.hmax = positive(m, mj, "hmax", method.hmax);
+  method.length_samples = int(parameter(m, mj, "length_samples", method.length_samples));
+  method.planes = int(parameter(m, mj, "planes", method.planes));
+  method.iterations = int(parameter(m, mj, "iterations", method.iterations));
+  method.h0 = parameter(m, mj, "h0", method.h0);
+  method.hmin = parameter(m, mj, "hmin", method.hmin);
+  method.hmax = parameter(m, mj, "hmax", method.hmax);
   method.strategy = m.string(mj, "strategy", method.strategy);
   method.builder = m.string(mj, "builder", method.builder);
   // preint2* take a second-order builder; anything else would fall back silently.
@@ -362,14 +368,13 @@ MethodSpec method_from(const json& mj, const Reader& top) {
     for (const auto& n : first) list += n + ", ";
     m.expected("builder", list + "plain or fast", mj.at("builder"));
   }
-  method.fast.termination = m.number(mj, "termination", method.fast.termination);
+  method.fast.termination = parameter(m, mj, "termination", method.fast.termination);
   method.fast.skip_empty = m.boolean(mj, "skip_empty", method.fast.skip_empty);
   method.fast.float_math = m.boolean(mj, "float_math", method.fast.float_math);
-  method.max_samples = double(m.integer_in(mj, "max_samples", 1, std::int64_t(1) << 53, std::int64_t(method.max_samples)));
-  method.max_work = double(m.integer_in(mj, "max_work", 1, std::int64_t(1) << 53, std::int64_t(method.max_work)));
+  method.max_samples = parameter(m, mj, "max_samples", method.max_samples);
+  method.max_work = parameter(m, mj, "max_work", method.max_work);
   // riemann's jitter (riemann.hpp): its seed, an integer JSON's doubles hold exactly.
-  if (mj.contains("jitter"))
-    method.jitter = static_cast<std::uint64_t>(m.integer_in(mj, "jitter", 0, std::int64_t(1) << 53, 0));
+  if (mj.contains("jitter")) method.jitter = static_cast<std::uint64_t>(parameter(m, mj, "jitter", 0));
   return method;
 }
 

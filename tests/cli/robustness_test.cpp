@@ -84,6 +84,44 @@ TEST(CliRobustness, BackgroundOrthoHeightAndJitterAreCheckedEverywhere) {
   EXPECT_EQ(run("render " + scene + out + " --method riemann --jitter 7", dir).code, 0);
 }
 
+// Issue 47 defect 12: one rule per method parameter (check_method_parameter,
+// vri/methods.hpp), so a value is refused in the same words from a scene file
+// and from its flag; table_size 1, length_samples 1 and planes 0 rendered
+// (with methods that do not read them), termination 2 and max_work 0.5 were
+// refused in other words or by other checks.
+TEST(CliRobustness, EveryMethodParameterHasOneRuleAndOneMessage) {
+  test::TempDir dir;
+  const std::string out = " -o " + (dir / "out.npy").string();
+  struct Bad {
+    const char *key, *value, *message;
+  };
+  for (const Bad& b : {Bad{"step", "-1", "method.step (--step): expected a finite number > 0, found -1"},
+                       Bad{"tolerance", "0", "method.tolerance (--tolerance): expected a finite number > 0, found 0"},
+                       Bad{"table_size", "1", "method.table_size (--table-size): expected an integer in [2, 4096], found 1"},
+                       Bad{"table_size", "5000", "expected an integer in [2, 4096], found 5000"},
+                       Bad{"iterations", "0", "method.iterations (--iterations): expected an integer in [1, 4096], found 0"},
+                       Bad{"h0", "-2", "method.h0 (--h0): expected a finite number > 0, found -2"},
+                       Bad{"hmin", "0", "method.hmin (--hmin): expected a finite number > 0, found 0"},
+                       Bad{"hmax", "-1", "method.hmax (--hmax): expected a finite number > 0, found -1"},
+                       Bad{"termination", "2", "method.termination (--termination): expected a number in [0, 1), found 2"},
+                       Bad{"termination", "-0.5", "expected a number in [0, 1), found -0.5"},
+                       Bad{"max_samples", "0.5", "method.max_samples (--max-samples): expected an integer in [1, 2^53], found 0.5"},
+                       Bad{"max_work", "0", "method.max_work (--max-work): expected an integer in [1, 2^53], found 0"},
+                       Bad{"length_samples", "1", "method.length_samples: expected an integer in [2, 4096], found 1"},
+                       Bad{"planes", "1", "method.planes: expected 0 (the table size) or an integer in [2, 16384], found 1"},
+                       Bad{"jitter", "-1", "method.jitter (--jitter): expected an integer in [0, 2^53], found -1"}}) {
+    SCOPED_TRACE(b.key);
+    const std::string given = std::string("\"") + b.key + "\": " + b.value;  // after the good scene's tolerance
+    const std::string scene = scene_with(dir, replaced(test::kGoodScene, R"("tolerance": 1e-5)",
+                                                       b.key == std::string("tolerance") ? given : R"("tolerance": 1e-5, )" + given));
+    expect_refused("render " + scene + out, b.message, dir);
+    std::string flag = b.key;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    if (flag == "length-samples" || flag == "planes" || flag == "jitter") continue;  // scene keys only, or read as text
+    expect_refused("render " + scene_with(dir, test::kGoodScene) + out + " --" + flag + " " + b.value, b.message, dir);
+  }
+}
+
 // Issue 47 defect 12: a message blames the value given, and prints numbers as
 // %g (1e-300, not 0.000000).
 TEST(CliRobustness, MessagesNameTheFlagGivenAndPrintItsNumber) {
@@ -114,7 +152,7 @@ TEST(CliRobustness, RenderParametersMustBeFiniteAndPositive) {  // defect 4, fla
   // ... and in the scene, naming the key path
   expect_refused("render " + scene_with(dir, replaced(test::kGoodScene, R"("tolerance": 1e-5)", R"("step": -2)"), "s.json") +
                      " -o " + out,
-                 "method.step: expected a number > 0, found -2", dir);
+                 "method.step (--step): expected a finite number > 0, found -2", dir);
 }
 
 TEST(CliRobustness, ThreadCountIsCapped) {  // defect 5

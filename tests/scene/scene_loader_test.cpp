@@ -105,9 +105,9 @@ TEST(SceneLoader, ReadsAndChecksIterations) {
   const Scene s = parse_scene(head + R"(, "method": {"name": "preint2", "iterations": 16}})", ".");
   EXPECT_EQ(s.method.iterations, 16);
   EXPECT_FALSE(s.method.table_size_given);
-  expect_refused(head + R"(, "method": {"iterations": 0}})", "method.iterations: expected an integer in [1, 4096], found 0");
+  expect_refused(head + R"(, "method": {"iterations": 0}})", "method.iterations (--iterations): expected an integer in [1, 4096], found 0");
   expect_refused(head + R"(, "method": {"iterations": 4097}})", "found 4097");
-  expect_refused(head + R"(, "method": {"iterations": 2.5}})", "method.iterations: expected an integer in [1, 4096], found 2.5");
+  expect_refused(head + R"(, "method": {"iterations": 2.5}})", "method.iterations (--iterations): expected an integer in [1, 4096], found 2.5");
   expect_refused(head + R"(, "method": {"iterations": "many"}})", "iterations");
 }
 
