@@ -92,9 +92,18 @@ class MethodInfo(TypedDict):
     distributed: bool
     termination: bool
     jitter: bool
+    parameters: List[str]
+
+class MethodParameter(TypedDict):
+    key: str
+    flag: str
+    expects: str
 
 def methods() -> List[MethodInfo]:
     """The integration methods (SPEC §9) and what each supports (vri/methods.hpp)."""
+
+def method_parameters() -> List[MethodParameter]:
+    """The numeric method parameters and the one rule each is checked by (vri/methods.hpp)."""
 
 def devices() -> List[str]:
     """The Vulkan devices backend='vulkan' can use (`vri devices`)."""

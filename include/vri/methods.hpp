@@ -140,6 +140,12 @@ struct MethodInfo {
   // marchers, "hmin" for adaptive's smallest step); empty for the methods
   // that walk cells. The render's work cap and the bricks' ghost layers read it.
   std::string_view step_parameter = {};
+  // The method-block keys that shape its image (SPEC §9's parameters, and
+  // the table builder where it builds tables): changing any other leaves
+  // its bytes as they are (EveryMethod.ReadsTheParametersItListsAndNoOther).
+  // max_samples and max_work cap every method; termination, skip_empty,
+  // float_math and jitter are the fast path's (the flags above).
+  std::vector<std::string_view> parameters = {};
   // Its per-ray integrator on a grid and on a mesh, and its GPU renderer (on
   // what gpu_grid and gpu_mesh say; null in a build without Vulkan); null
   // where it has none. make_integrator and the Vulkan backend call them.

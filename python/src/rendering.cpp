@@ -181,6 +181,21 @@ py::list methods() {
     d["distributed"] = info.distributed;
     d["termination"] = info.termination;
     d["jitter"] = info.jitter;
+    py::list parameters;
+    for (const std::string_view key : info.parameters) parameters.append(std::string(key));
+    d["parameters"] = parameters;
+    out.append(d);
+  }
+  return out;
+}
+
+py::list method_parameters() {
+  py::list out;
+  for (const MethodParameter& p : vri::method_parameters()) {
+    py::dict d;
+    d["key"] = std::string(p.key);
+    d["flag"] = std::string(p.flag);
+    d["expects"] = std::string(p.expects);
     out.append(d);
   }
   return out;
@@ -190,8 +205,13 @@ void bind_rendering(py::module_& m) {
   m.def("methods", &methods,
         "The integration methods (SPEC §9), one dict each: name, paper, and what it supports -\n"
         "grid, mesh (the volume kinds it renders), gpu_grid, gpu_mesh (backend='vulkan'),\n"
-        "distributed (mpirun), termination (early ray termination), jitter. The CLI, the viewer\n"
-        "and the checks read the same list (vri/methods.hpp).");
+        "distributed (mpirun), termination (early ray termination), jitter, and parameters (the\n"
+        "method keys that shape its image). The CLI, the viewer and the checks read the same\n"
+        "list (vri/methods.hpp).");
+  m.def("method_parameters", &method_parameters,
+        "The numeric method parameters, one dict each: key (the scene's method.KEY and render()'s\n"
+        "keyword), flag (the command line's, or '') and expects (its rule in words). One check holds\n"
+        "each for scene files, flags, the viewer and render() alike.");
   m.def("devices", &list_vulkan_devices,
         "The Vulkan devices backend='vulkan' can use, one str each (`vri devices`): index, name, type,\n"
         "Vulkan version. [] when there are none; ValueError when vri or the machine lacks Vulkan.");

@@ -6,7 +6,7 @@ import pytest
 import vri
 
 STUB = pathlib.Path(__file__).resolve().parents[1] / "vri.pyi"
-TYPING_ONLY = {"SceneLike", "TransferFunctionLike", "Trace", "RaySignal", "MethodInfo"}
+TYPING_ONLY = {"SceneLike", "TransferFunctionLike", "Trace", "RaySignal", "MethodInfo", "MethodParameter"}
 
 
 def test_version_is_cmake_project_version(root, run_cli):
@@ -34,6 +34,10 @@ def test_methods_are_the_registry_and_say_what_renders(root):
     assert [m["name"] for m in methods] == ["riemann", "preint1", "preint2", "preint2-dual", "adaptive", "exact",
                                             "pt", "pt-cylindrical", "tet-raycast"]
     assert all(m["paper"] for m in methods)
+    rules = {p["key"]: p for p in vri.method_parameters()}
+    assert rules["table_size"] == {"key": "table_size", "flag": "--table-size", "expects": "an integer in [2, 4096]"}
+    for m in methods:  # each listed key is a method key: numeric ones have a rule
+        assert m["parameters"] and all(k in rules or k in ("builder", "strategy") for k in m["parameters"]), m
     grid = root / "scenes" / "neghip.json"
     for m in methods:  # each claim about grids holds for vri.render
         if m["grid"]:

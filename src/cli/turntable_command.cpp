@@ -23,7 +23,6 @@
 #include "vri/error.hpp"
 #include "vri/io.hpp"
 #include "vri/render.hpp"  // checked_threads
-#include "vri/render.hpp"
 
 namespace vri::cli {
 

@@ -5,7 +5,6 @@
 #include <optional>
 #include <string>
 
-#include "vri/error.hpp"
 #include "vri/error.hpp"  // format_g
 #include "tables/table_builder.hpp"
 #include "tables/weighted_tables.hpp"

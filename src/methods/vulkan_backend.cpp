@@ -6,7 +6,6 @@
 
 #include "vri/error.hpp"
 #include "vri/methods.hpp"  // check_mesh_termination
-#include "vri/methods.hpp"
 #include "vri/render.hpp"
 #include "vri/scene.hpp"
 #include "vulkan_device.hpp"

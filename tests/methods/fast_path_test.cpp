@@ -20,7 +20,6 @@
 #include "vri/error.hpp"
 #include "vri/methods.hpp"
 #include "vri/render.hpp"  // termination_bound
-#include "vri/render.hpp"
 #include "vri/scene.hpp"
 #include "tables/zero_opacity.hpp"
 #include "volume/builtin_volumes.hpp"

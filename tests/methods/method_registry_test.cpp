@@ -3,13 +3,15 @@
 // one line naming it (issue 48: every list of methods reads the registry).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
+#include <utility>
+#include <vector>
 #include <string>
 
 #include "methods/method_registry_support.hpp"
 #include "vri/methods.hpp"
-#include "vri/render.hpp"  // vulkan_backend_built
-#include "vri/render.hpp"  // check_work
+#include "vri/render.hpp"  // vulkan_backend_built; check_work
 #include "vri/camera.hpp"
 
 namespace vri {
@@ -27,6 +29,26 @@ TEST(MethodRegistry, NamesAreSpecNinesInItsOrderAndOnce) {
   }
   EXPECT_EQ(names, "riemann preint1 preint2 preint2-dual adaptive exact pt pt-cylindrical tet-raycast ");
   EXPECT_EQ(find_method("preint3"), nullptr);
+}
+
+// SPEC §9's parameter column, read independently of the registry: each
+// method lists at least those (the table builder where it builds tables).
+TEST(MethodRegistry, ParametersHoldSpecNinesColumn) {
+  const std::pair<const char*, std::vector<std::string_view>> spec[] = {
+      {"riemann", {"step"}},
+      {"preint1", {"step", "table_size"}},
+      {"preint2", {"step", "table_size", "iterations"}},
+      {"preint2-dual", {"table_size", "iterations"}},
+      {"adaptive", {"tolerance", "h0", "hmin", "hmax", "strategy"}},
+      {"exact", {"tolerance"}},
+      {"pt", {"table_size", "length_samples"}},
+      {"pt-cylindrical", {"table_size", "planes"}},
+      {"tet-raycast", {"table_size"}}};
+  for (const auto& [name, keys] : spec) {
+    const auto& listed = known_method(name).parameters;
+    for (const std::string_view key : keys)
+      EXPECT_NE(std::find(listed.begin(), listed.end(), key), listed.end()) << name << " " << key;
+  }
 }
 
 TEST(MethodRegistry, ListsReadAsSentences) {
@@ -108,6 +130,55 @@ TEST_P(EveryMethod, WorkCapReadsTheStepParameterItNames) {
     EXPECT_EQ(why.find("with method."), std::string::npos) << why;
   else
     EXPECT_NE(why.find(named), std::string::npos) << why;
+}
+
+// The registry's parameters are the method-block keys that shape the image:
+// each one it lists changes some bytes, every other key changes none (a
+// listed key a method ignored, or an unlisted one it read, fails here).
+TEST_P(EveryMethod, ReadsTheParametersItListsAndNoOther) {
+  const bool grid = method().grid;
+  Scene base = test::small_scene(grid, method());
+  base.method.tolerance = 1e-3;  // adaptive's steps then reach hmax
+  base.lighting.enabled = true;   // exact's tolerance then decides its quadrature
+  const auto render = [](const Scene& s) {
+    const Image image = SceneRenderer(s).render(RenderOptions{.threads = 1});
+    return std::vector<float>(image.data().begin(), image.data().end());
+  };
+  const std::vector<float> before = render(base);
+  const bool second_order = GetParam().rfind("preint2", 0) == 0;
+  const std::pair<const char*, void (*)(MethodSpec&)> changes[] = {
+      {"step", [](MethodSpec& m) { m.step *= 0.7; }},
+      {"tolerance", [](MethodSpec& m) { m.tolerance = 0.05; }},  // exact takes at most 0.1
+      {"table_size", [](MethodSpec& m) { m.table_size *= 2; }},
+      {"iterations", [](MethodSpec& m) { m.iterations /= 2; }},
+      {"length_samples", [](MethodSpec& m) { m.length_samples += 4; }},
+      {"planes", [](MethodSpec& m) { m.planes = 40; }},
+      {"h0", [](MethodSpec& m) { m.h0 *= 0.6; }},
+      {"hmin", [](MethodSpec& m) { m.hmin = m.h0; }},  // no step shorter than the first
+      {"hmax", [](MethodSpec& m) { m.hmax *= 0.5; }},
+      {"strategy", [](MethodSpec& m) { m.strategy = "decoupled"; }},
+  };
+  const auto& listed = method().parameters;
+  for (const auto& [key, change] : changes) {
+    Scene changed = base;
+    change(changed.method);
+    const bool reads = std::find(listed.begin(), listed.end(), key) != listed.end();
+    // Read, but not seen in these 30 float pixels: exact's lit quadrature
+    // meets 1e-3 and 0.05 alike to a float; adaptive's steps at 1e-3 never
+    // shrink below h0, so hmin = h0 changes none of them.
+    const std::string pair = GetParam() + " " + key;
+    if (reads && (pair == "exact tolerance" || pair == "adaptive hmin")) continue;
+    EXPECT_EQ(render(changed) != before, reads) << key << (reads ? " is listed but changed nothing" : " is not listed but changed the image");
+  }
+  Scene other_builder = base;
+  other_builder.method.builder = second_order ? "plain" : "engel";  // brute and incremental agree to a float
+  const bool reads = std::find(listed.begin(), listed.end(), "builder") != listed.end();
+  EXPECT_EQ(render(other_builder) != before, reads) << "builder";
+  for (const std::string_view key : listed)  // a key of the method block: a numeric one has its rule
+    EXPECT_TRUE(key == "builder" || key == "strategy" ||
+                std::any_of(method_parameters().begin(), method_parameters().end(),
+                            [&](const MethodParameter& p) { return p.key == key; }))
+        << key;
 }
 
 std::vector<std::string> all_names() {

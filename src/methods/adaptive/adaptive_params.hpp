@@ -4,7 +4,6 @@
 #include <string>
 
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/methods.hpp"
 
 namespace vri {
 

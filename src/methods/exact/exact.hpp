@@ -21,7 +21,6 @@
 #include <optional>
 
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/methods.hpp"
 #include "piece_integrator.hpp"
 #include "shading/headlight_shader.hpp"
 #include "vri/transfer_function.hpp"

@@ -13,7 +13,6 @@
 #include <optional>
 
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/methods.hpp"
 #include "piece_integrator.hpp"
 #include "mesh/point_gradients.hpp"
 #include "mesh/tet_walk.hpp"

@@ -24,7 +24,6 @@
 
 #include "methods/fast_path.hpp"
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/methods.hpp"
 #include "shading/headlight_shader.hpp"
 #include "vri/lighting.hpp"
 #include "tables/discrete_tf.hpp"

@@ -26,7 +26,6 @@
 
 #include "methods/fast_path.hpp"
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/methods.hpp"
 #include "shading/headlight_shader.hpp"
 #include "transfer/float_transfer_function.hpp"
 #include "vri/transfer_function.hpp"

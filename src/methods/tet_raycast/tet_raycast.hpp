@@ -11,7 +11,6 @@
 #include <optional>
 
 #include "vri/methods.hpp"  // the constructors' types
-#include "vri/methods.hpp"
 #include "mesh/tet_walk.hpp"
 #include "shading/chord_lighting.hpp"
 #include "tables/slab_table.hpp"
