@@ -85,6 +85,7 @@ struct MethodParameter {
   std::string_view flag;    // the command line's, or empty (a scene key only)
   std::string_view expects; // the rule in words: "a finite number > 0"
   bool (*holds)(double);    // the rule
+  double (*of)(const MethodSpec&);  // its value in a MethodSpec
 };
 
 // Every numeric parameter of MethodSpec, in its order.

@@ -22,7 +22,6 @@
 #include "io/vti.hpp"
 #include "io/vtk_legacy.hpp"
 #include "io/vtu.hpp"
-#include "tables/second_order_table.hpp"
 #include "tables/table_builder.hpp"
 #include "mesh/tetrahedralize.hpp"
 #include "vri/scene.hpp"
