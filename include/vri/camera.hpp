@@ -38,6 +38,14 @@ class Camera {
   int height() const { return spec_.height; }
 
   Ray ray(int px, int py) const;
+  // What ray() builds on: the unit frame (u right, v up, w toward the eye),
+  // tan(fov_y/2) or ortho_height/2, width / height. The GPU makes its rays
+  // from these (src/methods/march/ray_setup.hpp).
+  struct Frame {
+    Vec3 u, v, w;
+    double half_h, aspect;
+  };
+  Frame frame() const { return {u_, v_, w_, half_h_, aspect_}; }
   // Continuous pixel coordinates (px, py) at which the world point p is seen
   // (pixel centres at integer + 0.5 ... i.e. the inverse of ray()); nullopt if behind the eye.
   std::optional<std::pair<double, double>> project(Vec3 p) const;

@@ -68,9 +68,9 @@ TEST(VulkanCli, ExitsCleanlyUnderGpuAssistedValidation) {
 
 // Issue 47: the host set up every ray of the image before the first chunk ran
 // (~88 bytes a pixel for riemann: 88 MiB at 1024^2, 1.87 GB at 4096^2), outside
-// --max-memory. Now one chunk's rays at a time, charged: a 1024^2 frame costs
-// the image (twice: the render and the file) and a chunk, about 64 MiB over
-// an 8^2 one on lavapipe, where it cost over 200.
+// --max-memory. Now the GPU makes the rays from a camera block
+// (camera_rays_test.cpp): a 1024^2 frame costs the image (twice: the render
+// and the file), about 64 MiB over an 8^2 one on lavapipe, where it cost over 200.
 TEST(VulkanCli, RaysAreSetUpAChunkAtATime) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "resident memory is the sanitizer's here";

@@ -199,8 +199,9 @@ TEST(VulkanBackend, NotOnTheGpuYetIsSaidInOneLine) {
   EXPECT_THROW(SceneRenderer(scene, Backend::Vulkan), Error) << "--double";
 }
 
-// An image whose rays exceed one storage buffer of the device (lavapipe: 128
-// MiB, here 1800 x 1000 x 84 bytes) runs in chunks: the same image.
+// An image of more pixels than a chunk (kChunkPixels, 2^18; here 1800 x
+// 1000, seven chunks) runs in chunks, each making its rays from its first
+// pixel on: the same image.
 TEST(VulkanBackend, LargeImagesRunInChunks) {
   Scene scene = parse_scene(R"({"volume": {"builtin": "sphere", "dims": [16, 16, 16]},
     "transfer_function": {"points": [[-8, 1, 0.5, 0, 0.3], [0, 0.2, 0.4, 1, 0.1], [4, 0, 0, 0, 0]]},

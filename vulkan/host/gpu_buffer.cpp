@@ -1,5 +1,6 @@
 #include "gpu_buffer.hpp"
 
+#include <atomic>
 #include <cstring>
 #include <utility>
 
@@ -83,11 +84,16 @@ void mapped(const Api& api, VkDevice device, VkDeviceMemory memory, std::size_t 
   api.vkUnmapMemory(device, memory);
 }
 
+std::atomic<std::uint64_t> uploaded{0};
+
 }  // namespace
+
+std::uint64_t GpuBuffer::uploaded_bytes() { return uploaded.load(); }
 
 void GpuBuffer::upload(std::span<const std::byte> data, std::size_t offset) {
   if (offset > bytes_ || data.size() > bytes_ - offset) throw Error("vulkan: upload larger than its buffer");
   if (data.empty()) return;
+  uploaded.fetch_add(data.size(), std::memory_order_relaxed);
   const Api& api = device_->api();
   if (host_visible_) {
     mapped(

@@ -4,6 +4,7 @@
 // to the host (integrated GPUs, lavapipe) the copies are memcpy; elsewhere
 // they go through a host-visible staging buffer.
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <span>
 
@@ -29,6 +30,9 @@ class GpuBuffer {
   // first out.size() bytes out.
   void upload(std::span<const std::byte> data, std::size_t offset = 0);
   void download(std::span<std::byte> out) const;
+  // Bytes copied in by every buffer of this process so far (what a frame
+  // uploads is the difference across it; issue 47).
+  static std::uint64_t uploaded_bytes();
 
  private:
   struct Allocation {

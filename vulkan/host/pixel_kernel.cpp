@@ -1,6 +1,7 @@
 #include "pixel_kernel.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "vri/memory.hpp"
@@ -23,20 +24,23 @@ GridParams grid_params(const VulkanDevice& device, const GridVolume& volume, int
 }
 
 Image run_pixels(const std::shared_ptr<const VulkanDevice>& device, const ComputeKernel& kernel, int width,
-                 int height, std::span<const GpuBuffer* const> inputs, const RaySetup& rays, int ray_floats,
-                 GridParams& grid, const void* params) {
+                 int height, std::span<const GpuBuffer* const> inputs, const RaySetup& rays, GridParams& grid,
+                 const void* params, const HostFinish* finish) {
   const std::size_t pixels = static_cast<std::size_t>(width) * height;
-  const std::size_t ray_bytes = sizeof(float) * static_cast<std::size_t>(ray_floats), pixel_bytes = 4 * sizeof(float);
+  const std::size_t pixel_bytes = 4 * sizeof(float);
   const std::size_t chunk = std::max<std::size_t>(
-      64, std::min<std::size_t>({pixels, kChunkPixels, device->max_storage_buffer_bytes() / ray_bytes,
-                                 device->max_storage_buffer_bytes() / pixel_bytes}));
+      64, std::min<std::size_t>({pixels, kChunkPixels, device->max_storage_buffer_bytes() / pixel_bytes}));
+  const std::size_t tail_floats = finish ? static_cast<std::size_t>(finish->floats) : 0;
   Image image(width, height);
+  std::vector<float> tails;
   for (std::size_t first = 0; first < pixels; first += chunk) {
     const std::size_t n = std::min(chunk, pixels - first);
-    const MemoryCharge charge(n, ray_bytes, "the rays of a chunk of pixels");
-    const std::vector<float> chunk_rays = rays({first, n});
-    const GpuBuffer ray_buffer(device, std::as_bytes(std::span<const float>(chunk_rays)), "the rays");
+    const std::vector<float> block = rays({first, n});
+    const MemoryCharge charge(block.size() + n * tail_floats, sizeof(float), "the rays of a chunk of pixels");
+    const GpuBuffer ray_buffer(device, std::as_bytes(std::span<const float>(block)), "the rays");
     GpuBuffer image_buffer(device, n * pixel_bytes, "the image");
+    std::optional<GpuBuffer> tail_buffer;
+    if (finish) tail_buffer.emplace(device, n * tail_floats * sizeof(float), "the rays' ends");
     const std::uint64_t groups = (n + 63) / 64;
     const auto gx = static_cast<std::uint32_t>(std::min<std::uint64_t>(groups, device->max_workgroups_x()));
     const auto gy = static_cast<std::uint32_t>((groups + gx - 1) / gx);
@@ -46,8 +50,15 @@ Image run_pixels(const std::shared_ptr<const VulkanDevice>& device, const Comput
     for (const GpuBuffer*& b : buffers)
       if (!b) b = &ray_buffer;
     buffers.push_back(&image_buffer);
+    if (tail_buffer) buffers.push_back(&*tail_buffer);
     kernel.run(gx, gy, buffers, params);
-    image_buffer.download(std::as_writable_bytes(std::span<float>(image.data()).subspan(4 * first, 4 * n)));
+    const std::span<float> rgba = std::span<float>(image.data()).subspan(4 * first, 4 * n);
+    image_buffer.download(std::as_writable_bytes(rgba));
+    if (finish) {
+      tails.resize(n * tail_floats);
+      tail_buffer->download(std::as_writable_bytes(std::span<float>(tails)));
+      finish->run({first, n}, rgba, tails);
+    }
   }
   return image;
 }

@@ -65,3 +65,15 @@ DF df_div(DF a, DF b) {
   precise float q2 = r.hi / b.hi;
   return df_two_sum(q1, q2);
 }
+// sqrt(a) to about 44 bits (one Newton step on the float root); 0 for a <= 0.
+DF df_sqrt(DF a) {
+  if (!(a.hi > 0.0)) return DF(0.0, 0.0);
+  precise float q = sqrt(a.hi);
+  const DF r = df_sub(a, df_two_prod(q, q));
+  precise float c = r.hi / (2.0 * q);
+  return df_fast_two_sum(q, c);
+}
+// An int exactly (its top 23 bits and its low 8, each exact in float).
+DF df_from_int(int n) { return df_two_sum(float(n >> 8) * 256.0, float(n & 255)); }
+// floor(a) as an int, clamped to [-2^31 + 128, 2^31 - 128] (the largest floats an int holds).
+int df_floor_int(DF a) { return int(clamp(df_floor(a), -2147483520.0, 2147483520.0)); }

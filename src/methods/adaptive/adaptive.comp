@@ -38,9 +38,8 @@ SPLIT_INPUT(uint, volume, 0, 2u, 0)
 SPLIT_INPUT(float, gradients, 4, 2u, 1)  // lit only
 layout(std430, binding = 8) readonly buffer Tf { float v[]; } tf;
 layout(std430, binding = 9) readonly buffer TfBins { int first[]; } bins;
-// Per ray (ray_setup.hpp, kEntryRayFloats): u0 (hi x3, lo x3), du per world
-// unit (hi x3, lo x3), the length inside the box (hi, lo; < 0: the ray
-// misses it), the direction (x, y, z).
+// The camera block each ray is made from (camera_rays.glsl,
+// src/methods/march/ray_setup.hpp).
 layout(std430, binding = 10) readonly buffer Rays { float r[]; } rays;
 layout(std430, binding = 11) readonly buffer EmptyCells { uint bits[]; } empty_cells;
 layout(std430, binding = 12) writeonly buffer Image { vec4 px[]; } image;
@@ -52,7 +51,7 @@ layout(std430, binding = 12) writeonly buffer Image { vec4 px[]; } image;
 #include "shading.glsl"
 #include "simpson_step.glsl"
 
-const uint kRayFloats = 17u;
+#include "camera_rays.glsl"
 
 DF u0[3], du[3];
 vec3 d;
@@ -159,13 +158,11 @@ void integrate_run(float t0, float t_end, float cutoff) {
 void main() {
   const uint pixel = PIXEL_INDEX();
   if (pixel >= p.pixels) return;
-  const uint r = pixel * kRayFloats;
-  for (int a = 0; a < 3; ++a) {
-    u0[a] = DF(rays.r[r + a], rays.r[r + 3 + a]);
-    du[a] = DF(rays.r[r + 6 + a], rays.r[r + 9 + a]);
-  }
-  const DF t_end = DF(rays.r[r + 12u], rays.r[r + 13u]);
-  d = vec3(rays.r[r + 14u], rays.r[r + 15u], rays.r[r + 16u]);
+  // The ray from its entry into the box: u0 + t du, t in world units up to t_end (< 0: a miss).
+  const PixelRay ray = pixel_ray(pixel);
+  grid_entry(ray, cam_df(kCamScale), u0, du);  // finite on a miss too
+  const DF t_end = ray.hits ? world_length(ray) : DF(-1.0, 0.0);
+  d = float_direction(ray);
   const float brightest = p.lit != 0 ? max(1.0, p.ka + p.kd + p.ks) : 1.0;
   const float cutoff = p.skip != 0 ? 0.1 * p.tolerance / brightest : 0.0;
   // The runs of non-empty macro cells (for_each_occupied_run).

@@ -44,9 +44,8 @@ layout(std430, binding = 8) readonly buffer Tf { float v[]; } tf;
 layout(std430, binding = 9) readonly buffer TfBins { int first[]; } bins;
 // opaque.before[i]: segments 0 .. i-1 with tau not zero (i = 0 .. segments).
 layout(std430, binding = 10) readonly buffer Opaque { int before[]; } opaque;
-// Per ray (ray_setup.hpp, kEntryRayFloats): u0 (hi x3, lo x3), du per world
-// unit (hi x3, lo x3), the length inside the box (hi, lo; < 0: the ray
-// misses it), the direction (x, y, z).
+// The camera block each ray is made from (camera_rays.glsl,
+// src/methods/march/ray_setup.hpp).
 layout(std430, binding = 11) readonly buffer Rays { float r[]; } rays;
 layout(std430, binding = 12) readonly buffer EmptyCells { uint bits[]; } empty_cells;
 layout(std430, binding = 13) writeonly buffer Image { vec4 px[]; } image;
@@ -59,7 +58,7 @@ layout(std430, binding = 13) writeonly buffer Image { vec4 px[]; } image;
 #include "cubic.glsl"
 #include "simpson_step.glsl"
 
-const uint kRayFloats = 17u;
+#include "camera_rays.glsl"
 
 DF u0[3], du[3];
 vec3 d;
@@ -222,13 +221,11 @@ void split(float len) {
 void main() {
   const uint pixel = PIXEL_INDEX();
   if (pixel >= p.pixels) return;
-  const uint r = pixel * kRayFloats;
-  for (int a = 0; a < 3; ++a) {
-    u0[a] = DF(rays.r[r + a], rays.r[r + 3 + a]);
-    du[a] = DF(rays.r[r + 6 + a], rays.r[r + 9 + a]);
-  }
-  const DF t_end = DF(rays.r[r + 12u], rays.r[r + 13u]);
-  d = vec3(rays.r[r + 14u], rays.r[r + 15u], rays.r[r + 16u]);
+  // The ray from its entry into the box: u0 + t du, t in world units up to t_end (< 0: a miss).
+  const PixelRay ray = pixel_ray(pixel);
+  grid_entry(ray, cam_df(kCamScale), u0, du);  // finite on a miss too
+  const DF t_end = ray.hits ? world_length(ray) : DF(-1.0, 0.0);
+  d = float_direction(ray);
   // The budgets (adaptive_guaranteed.cpp): the ray's share of the tolerance
   // per unit length; lit colours reach ka + kd + ks.
   const float brightest = p.lit != 0 ? max(1.0, p.ka + p.kd + p.ks) : 1.0;

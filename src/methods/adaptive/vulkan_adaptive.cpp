@@ -67,7 +67,7 @@ Image VulkanAdaptive::render(const Camera& camera, const RenderOptions& options)
   const GridVolume& volume = scene_.grid();
   const MethodSpec& m = scene_.method;
   const double vu = volume.voxel_unit();
-  const RaySetup rays = [&](PixelSpan span) { return entry_rays(camera, volume, span, options.threads); };
+  const RaySetup rays = [&](PixelSpan span) { return camera_block(camera, grid_box(volume, 0), span); };
   Params p{grid_params(*device_, volume, volume_.type, 0),
            tf_.params(),
            shading_params(shading_, 1),
@@ -77,7 +77,7 @@ Image VulkanAdaptive::render(const Camera& camera, const RenderOptions& options)
            static_cast<float>(m.hmax * vu),
            parse_adaptive_strategy(m.strategy) == AdaptiveStrategy::Coupled ? 1 : 0,
            empty_->params};
-  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kEntryRayFloats,
+  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays,
                     p.grid, &p);
 }
 

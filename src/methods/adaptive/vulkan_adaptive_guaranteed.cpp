@@ -78,7 +78,7 @@ Image VulkanGuaranteedAdaptive::render(const Camera& camera, const RenderOptions
   // As the CPU's: lit, steps of at most a quarter voxel (the specular spike
   // near a vanishing gradient); a floor of 1e-4 voxel only to end the loop.
   const double hmax = shading_ ? std::min(m.hmax, 0.25) * vu : m.hmax * vu;
-  const RaySetup rays = [&](PixelSpan span) { return entry_rays(camera, volume, span, options.threads); };
+  const RaySetup rays = [&](PixelSpan span) { return camera_block(camera, grid_box(volume, 0), span); };
   Params p{grid_params(*device_, volume, volume_.type, 0),
            tf_.params(),
            shading_params(shading_, 1),
@@ -87,7 +87,7 @@ Image VulkanGuaranteedAdaptive::render(const Camera& camera, const RenderOptions
            static_cast<float>(1e-4 * vu),
            margin_,
            empty_->params};
-  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kEntryRayFloats,
+  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays,
                     p.grid, &p);
 }
 

@@ -7,151 +7,90 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <string>
 
-#include "methods/riemann/float_riemann.hpp"  // riemann_samples, jitter_fraction
-#include "vri/error.hpp"
-#include "tables/slab_integral.hpp"
-#include "volume/float_sampler.hpp"
+#include "methods/riemann/float_riemann.hpp"  // jitter_fraction
 
 namespace vri::vulkan {
 
 namespace {
 
-// x as the double-float hi + lo, hi at out[0] and lo at out[lo_at].
-void put(float* out, double x, int lo_at) {
+// camera_rays.glsl's slots.
+enum Slot { kEye = 0, kU = 3, kV = 6, kW = 9, kAspect = 12, kHalfH = 13, kBoxLo = 14, kBoxHi = 17, kOrigin = 20,
+            kInverse = 23, kStep = 26, kScale = 27 };
+enum Word { kWidth = 56, kHeight = 57, kFirst = 58, kOrtho = 59, kExtras = 60 };
+
+// x as the double-float hi + lo at out[0], out[1].
+void put(float* out, double x) {
   const float hi = static_cast<float>(x);
   out[0] = hi;
-  out[lo_at] = static_cast<float>(x - static_cast<double>(hi));
+  out[1] = static_cast<float>(x - static_cast<double>(hi));
 }
-
-// The span's rays, `floats` each: f(x, y, ray) for each pixel (x, y) of it,
-// on `threads` threads (0: every core); a ray starts as zeros.
-template <class Pixel>
-std::vector<float> rays_of(const Camera& camera, PixelSpan span, int floats, int threads, const Pixel& pixel) {
-  std::vector<float> out(span.count * static_cast<std::size_t>(floats), 0.0f);
-  const auto width = static_cast<std::size_t>(camera.width());
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);  // as render() does
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, span.count, 256),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                          const std::size_t p = span.first + i;
-                          pixel(static_cast<int>(p % width), static_cast<int>(p / width), out.data() + i * floats);
-                        }
-                      });
-  });
-  return out;
+void put(std::vector<float>& block, int slot, double x) { put(block.data() + 2 * slot, x); }
+void put(std::vector<float>& block, int slot, Vec3 v) {
+  for (int a = 0; a < 3; ++a) put(block, slot + a, v[a]);
 }
-
-void put_direction(float* out, const Ray& ray) {
-  const auto d = detail::direction(ray);
-  for (int a = 0; a < 3; ++a) out[a] = d[a];
-}
-
-// A count as the float whose bits are its int32 (the shaders read it with floatBitsToInt).
-float count_bits(long long n) {
-  return std::bit_cast<float>(static_cast<std::int32_t>(std::min<long long>(n, INT32_MAX)));
-}
+void put_word(std::vector<float>& block, int at, std::uint32_t w) { block[at] = std::bit_cast<float>(w); }
 
 }  // namespace
 
-std::vector<float> riemann_rays(const Camera& camera, const GridVolume& volume, double h,
-                                std::optional<std::uint64_t> jitter, PixelSpan pixels, int threads) {
-  const FloatSampler sampler(volume);
-  return rays_of(camera, pixels, kRiemannRayFloats, threads, [&](int x, int y, float* r) {
-    const Ray ray = camera.ray(x, y);
-    const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
-    if (!iv) return;  // no samples: transparent
-    const double u = jitter ? detail::jitter_fraction(ray, *jitter) : 0.0;
-    long long n = detail::riemann_samples(*iv, h);
-    // The CPU stops at the first step with h_k <= 0 (a ray that only grazes the box).
-    double h_last = std::min(h, iv->t1 - (iv->t0 + static_cast<double>(n - 1) * h));
-    if (!(h_last > 0)) {
-      --n;
-      h_last = n > 0 ? std::min(h, iv->t1 - (iv->t0 + static_cast<double>(n - 1) * h)) : 0.0;
-    }
-    if (n <= 0) return;
-    const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
-    for (int a = 0; a < 3; ++a) {
-      put(r + a, u0[a], 3);
-      put(r + 6 + a, du[a], 3);
-    }
-    put(r + 12, u, 1);
-    put(r + 14, h_last < h ? u * h_last / h : u, 1);
-    r[16] = static_cast<float>(h_last);
-    r[17] = count_bits(n);
-    put_direction(r + 18, ray);
-  });
+RayBox grid_box(const GridVolume& volume, double step) {
+  const Vec3 s = volume.spacing();
+  return {volume.box_lo(), volume.box_hi(), volume.origin(), {1 / s.x, 1 / s.y, 1 / s.z}, step};
 }
 
-std::vector<float> entry_rays(const Camera& camera, const GridVolume& volume, PixelSpan pixels, int threads) {
-  const FloatSampler sampler(volume);
-  return rays_of(camera, pixels, kEntryRayFloats, threads, [&](int x, int y, float* r) {
-    const Ray ray = camera.ray(x, y);
-    const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
-    r[12] = -1;
-    if (!iv) return;
-    const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir);
-    for (int a = 0; a < 3; ++a) {
-      put(r + a, u0[a], 3);
-      put(r + 6 + a, du[a], 3);
-    }
-    put(r + 12, iv->length(), 1);
-    put_direction(r + 14, ray);
-  });
-}
-
-std::vector<float> slab_rays(int steps, const Camera& camera, const GridVolume& volume, const DiscreteTf& tf,
-                             const detail::FloatLighting& lighting, double h, PixelSpan pixels, int threads) {
-  if (steps != 1 && steps != 2) throw Error("vulkan: slabs of 1 or 2 steps, not " + std::to_string(steps));
-  const FloatSampler sampler(volume);
-  return volume.visit([&](auto values) {
-    return rays_of(camera, pixels, slab_ray_floats(steps), threads, [&](int x, int y, float* r) {
-      const Ray ray = camera.ray(x, y);
-      const auto iv = clip_to_box(ray, volume.box_lo(), volume.box_hi());
-      if (!iv) {
-        r[12] = count_bits(-1);
-        return;
-      }
-      // As march_float and finish_float (float_march.hpp).
-      const long long full = static_cast<long long>(std::floor(iv->length() / (steps * h)));
-      const Vec3 u0 = sampler.grid(ray.at(iv->t0)), du = sampler.grid_step(ray.dir * h);
-      for (int a = 0; a < 3; ++a) {
-        put(r + a, u0[a], 3);
-        put(r + 6 + a, du[a], 3);
-      }
-      r[12] = count_bits(full);
-      put_direction(r + 13 + 8 * steps, ray);
-      const detail::FloatSample front = detail::sample_at(sampler, values.data(), lighting, detail::direction(ray),
-                                                          u0 + static_cast<double>(full * steps) * du);
-      const auto put_slabs = [&](const auto& slabs) {
-        for (std::size_t i = 0; i < slabs.size(); ++i) {
-          const SlabRgba& s = slabs[i];
-          const double v[4] = {s.r, s.g, s.b, s.a};
-          for (int c = 0; c < 4; ++c) put(r + 13 + 4 * i + c, v[c], 4 * steps);
-        }
-      };
-      if (steps == 1)
-        put_slabs(detail::last_slabs<1>(sampler, values.data(), tf, lighting, ray, *iv, full, h, front));
-      else
-        put_slabs(detail::last_slabs<2>(sampler, values.data(), tf, lighting, ray, *iv, full, h, front));
-    });
-  });
-}
-
-std::vector<float> mesh_rays(const Camera& camera, const TetMesh& mesh, Vec3 centre, PixelSpan pixels, int threads) {
+RayBox mesh_box(const TetMesh& mesh, Vec3 centre) {
   const Vec3 pad = (mesh.box_hi() - mesh.box_lo()) * 1e-3;
-  return rays_of(camera, pixels, kMeshRayFloats, threads, [&](int x, int y, float* r) {
-    const Ray ray = camera.ray(x, y);
-    const auto iv = clip_to_box(ray, mesh.box_lo() - pad, mesh.box_hi() + pad);
-    r[6] = -1;
-    if (!iv) return;
-    const Vec3 o = ray.at(std::max(iv->t0, 0.0)) - centre;
-    for (int a = 0; a < 3; ++a) r[a] = static_cast<float>(o[a]);
-    put_direction(r + 3, ray);
-    r[6] = 1;
+  return {mesh.box_lo() - pad, mesh.box_hi() + pad, centre, {1, 1, 1}, 0};
+}
+
+std::vector<float> camera_block(const Camera& camera, const RayBox& box, PixelSpan span, int extras) {
+  std::vector<float> block(kCameraFloats + span.count * static_cast<std::size_t>(extras), 0.0f);
+  // The frame: the box's centre at 0, its largest side scaled by a power of
+  // two (exact: ratios and grid coordinates stay the CPU's) to [1, 2).
+  const Vec3 centre = (box.lo + box.hi) * 0.5, size = box.hi - box.lo;
+  const double largest = std::max({size.x, size.y, size.z});
+  const double scale = largest > 0 && std::isfinite(largest) ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
+  const auto frame = [&](Vec3 p) { return (p - centre) * scale; };
+  const CameraSpec& spec = camera.spec();
+  const Camera::Frame f = camera.frame();
+  const bool ortho = spec.projection == Projection::Orthographic;
+  put(block, kEye, frame(spec.eye));
+  put(block, kU, f.u);
+  put(block, kV, f.v);
+  put(block, kW, f.w);
+  put(block, kAspect, f.aspect);
+  put(block, kHalfH, ortho ? f.half_h * scale : f.half_h);  // world units when orthographic
+  put(block, kBoxLo, frame(box.lo));
+  put(block, kBoxHi, frame(box.hi));
+  put(block, kOrigin, frame(box.origin));
+  put(block, kInverse, box.inverse * (1 / scale));
+  put(block, kStep, box.step * scale);
+  put(block, kScale, scale);
+  put_word(block, kWidth, static_cast<std::uint32_t>(camera.width()));
+  put_word(block, kHeight, static_cast<std::uint32_t>(camera.height()));
+  put_word(block, kFirst, static_cast<std::uint32_t>(span.first));
+  put_word(block, kOrtho, ortho ? 1 : 0);
+  put_word(block, kExtras, static_cast<std::uint32_t>(extras));
+  return block;
+}
+
+std::vector<float> riemann_block(const Camera& camera, const GridVolume& volume, double h,
+                                 std::optional<std::uint64_t> jitter, PixelSpan span, int threads) {
+  std::vector<float> block = camera_block(camera, grid_box(volume, h), span, jitter ? 2 : 0);
+  if (!jitter) return block;
+  const auto width = static_cast<std::size_t>(camera.width());
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);  // as render() does
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, span.count, 1024),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                          const std::size_t p = span.first + i;
+                          const Ray ray = camera.ray(static_cast<int>(p % width), static_cast<int>(p / width));
+                          put(block.data() + kCameraFloats + 2 * i, detail::jitter_fraction(ray, *jitter));
+                        }
+                      });
   });
+  return block;
 }
 
 }  // namespace vri::vulkan

@@ -12,9 +12,11 @@
 // with the weighted tables (Lum, Wilson & Ma 2004: front and back for
 // preint1; full, middle and back for preint2, lit_slab.hpp). The last,
 // partial slab (shorter than STEPS steps) is integrated exactly on the host
-// as STEPS sub-slabs, as on the CPU (last_slabs), and arrives with the ray
-// (host/ray_setup.cpp). Slabs inside empty macro cells are leapt over
-// (empty_space.glsl).
+// as STEPS sub-slabs, as on the CPU (last_slabs): this writes, for each
+// pixel, where it stopped (the whole slabs, or -1: no partial slab to add)
+// and T, and the host composites the rest (vulkan_preint.cpp). Each ray is
+// made here from the camera (camera_rays.glsl). Slabs inside empty macro
+// cells are leapt over (empty_space.glsl).
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 
@@ -37,12 +39,12 @@ SPLIT_INPUT(vec4, table, 4, 4u, 1)
 SPLIT_INPUT(vec4, weighted1, 8, 4u, 2)
 SPLIT_INPUT(vec4, weighted2, 12, 4u, 3)
 SPLIT_INPUT(float, gradients, 16, 2u, 4)  // lit only
-// Per ray (ray_setup.hpp, slab_rays): u0 (hi x3, lo x3), du (hi x3, lo x3),
-// the number of whole slabs (int bits), the last STEPS sub-slabs'
-// premultiplied (r, g, b, alpha) hi, then lo, the direction (x, y, z).
+// The camera block (src/methods/march/ray_setup.hpp).
 layout(std430, binding = 20) readonly buffer Rays { float r[]; } rays;
 layout(std430, binding = 21) readonly buffer EmptyCells { uint bits[]; } empty_cells;
 layout(std430, binding = 22) writeonly buffer Image { vec4 px[]; } image;
+// Per pixel: the whole slabs composited (int bits; -1: add no partial slab), T.
+layout(std430, binding = 23) writeonly buffer Tails { vec2 v[]; } tails;
 
 vec4 entry_of(int which, uint e) { return which == 0 ? table_at(e) : which == 1 ? weighted1_at(e) : weighted2_at(e); }
 
@@ -52,8 +54,7 @@ vec4 entry_of(int which, uint e) { return which == 0 ? table_at(e) : which == 1 
 #include "grid_sampler.glsl"
 #include "table_lookup.glsl"
 #include "shading.glsl"
-
-const uint kRayFloats = 16u + 8u * STEPS;
+#include "camera_rays.glsl"
 
 DF u0[3], du[3];
 vec3 d;
@@ -123,14 +124,12 @@ vec4 slab(Sample f, Sample m, Sample b) {
 void main() {
   const uint pixel = PIXEL_INDEX();
   if (pixel >= p.pixels) return;
-  const uint r = pixel * kRayFloats;
-  for (int a = 0; a < 3; ++a) {
-    u0[a] = DF(rays.r[r + a], rays.r[r + 3 + a]);
-    du[a] = DF(rays.r[r + 6 + a], rays.r[r + 9 + a]);
-  }
-  const uint tail = 13u, direction = tail + 8u * STEPS;
-  d = vec3(rays.r[r + direction], rays.r[r + direction + 1u], rays.r[r + direction + 2u]);
-  const int full = floatBitsToInt(rays.r[r + 12u]);
+  const PixelRay ray = pixel_ray(pixel);
+  const DF h = cam_df(kCamStep);
+  // As float_march.hpp: the whole slabs, floor(length / (STEPS h)); -1: a miss.
+  const int full = ray.hits ? df_floor_int(df_div(df_sub(ray.t1, ray.t0), df_mul_f(h, float(STEPS)))) : -1;
+  grid_entry(ray, h, u0, du);  // finite on a miss too
+  d = float_direction(ray);
   FrontToBack acc = ftb_start();
   if (full >= 0) {  // -1: the ray misses the volume
     // Each turn takes the samples of one slab after `front` and composites
@@ -160,15 +159,9 @@ void main() {
       front = back;
       k = to;
     }
-    if (!ftb_below(acc, GRID_TERMINATION))
-      for (uint k = 0u; k < STEPS; ++k) {
-        DF v[4];
-        for (uint c = 0u; c < 4u; ++c) {
-          const uint at = r + tail + 4u * k + c;
-          v[c] = DF(rays.r[at], rays.r[at + 4u * STEPS]);
-        }
-        ftb_add_df(acc, v);
-      }
   }
+  // The host adds the partial slab unless the ray missed or stopped early.
+  const bool tail = full >= 0 && !ftb_below(acc, GRID_TERMINATION);
+  tails.v[pixel] = vec2(intBitsToFloat(tail ? full : -1), df_float(acc.T));
   image.px[pixel] = ftb_pixel(acc);
 }

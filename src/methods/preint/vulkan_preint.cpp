@@ -1,6 +1,11 @@
 #include "vulkan_preint.hpp"
 #include "preint1.hpp"  // make_vulkan_preint
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <bit>
 #include <cstdint>
 
 #include "methods/march/float_shading.hpp"
@@ -33,8 +38,8 @@ struct Params {
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
 // The bindings of preint.comp: the volume, three tables, the gradients (four
-// each), the rays, the empty macro cells, the image.
-constexpr int kBindings = 5 * GpuArray::kParts + 3;
+// each), the camera block, the empty macro cells, the image, the rays' ends.
+constexpr int kBindings = 5 * GpuArray::kParts + 4;
 
 std::span<const std::byte> bytes_of(const float* data, std::size_t floats) {
   return std::as_bytes(std::span<const float>(data, floats));
@@ -104,14 +109,54 @@ VulkanPreint::~VulkanPreint() = default;
 Image VulkanPreint::render(const Camera& camera, const RenderOptions& options) const {
   throw_if_cancelled(options);
   const GridVolume& volume = scene_.grid();
-  const RaySetup rays = [&](PixelSpan span) {
-    return slab_rays(steps_, camera, volume, tf_, lighting_, h_, span, options.threads);
-  };
+  const RaySetup rays = [&](PixelSpan span) { return camera_block(camera, grid_box(volume, h_), span); };
+  const HostFinish finish{2, [&](PixelSpan span, std::span<float> rgba, std::span<const float> tails) {
+                            add_partial_slabs(camera, span, rgba, tails, options.threads);
+                          }};
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
            {axis_->size(), axis_->lo(), axis_->scale(), shading_params(shading_, lighting_.interpolated() ? 2 : 1)},
            empty_->params};
-  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, slab_ray_floats(steps_),
-                    p.grid, &p);
+  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, p.grid, &p,
+                    &finish);
+}
+
+void VulkanPreint::add_partial_slabs(const Camera& camera, PixelSpan span, std::span<float> rgba,
+                                     std::span<const float> tails, int threads) const {
+  const GridVolume& volume = scene_.grid();
+  const auto width = static_cast<std::size_t>(camera.width());
+  volume.visit([&](auto values) {
+    const auto pixel = [&](std::size_t i) {
+      const auto full = std::bit_cast<std::int32_t>(tails[2 * i]);
+      if (full < 0) return;  // a miss, or T fell below the termination threshold
+      const std::size_t p = span.first + i;
+      const Ray ray = camera.ray(static_cast<int>(p % width), static_cast<int>(p / width));
+      const auto iv = volume.clip(ray);
+      if (!iv) return;  // a graze the kernel's double-float took for a hit
+      const Vec3 u0 = sampler_.grid(ray.at(iv->t0)), du = sampler_.grid_step(ray.dir * h_);
+      const detail::FloatSample front =
+          detail::sample_at(sampler_, values.data(), lighting_, detail::direction(ray),
+                            u0 + static_cast<double>(static_cast<long long>(full) * steps_) * du);
+      detail::FrontToBack acc;
+      for (int c = 0; c < 3; ++c) acc.C[c] = rgba[4 * i + c];
+      acc.T = tails[2 * i + 1];
+      const auto add = [&](const auto& slabs) {
+        for (const SlabRgba& v : slabs) acc.add(v.r, v.g, v.b, v.a);
+      };
+      if (steps_ == 1)
+        add(detail::last_slabs<1>(sampler_, values.data(), tf_, lighting_, ray, *iv, full, h_, front));
+      else
+        add(detail::last_slabs<2>(sampler_, values.data(), tf_, lighting_, ray, *iv, full, h_, front));
+      const Rgba out = acc.result();
+      for (int c = 0; c < 4; ++c) rgba[4 * i + c] = static_cast<float>(out[c]);
+    };
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);  // as render() does
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, span.count, 256),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i < r.end(); ++i) pixel(i);
+                        });
+    });
+  });
 }
 
 }  // namespace vri::vulkan

@@ -3,7 +3,7 @@
 // once for each): the CPU float path's march (src/methods/preint/float_march.hpp)
 // over the same tables - built on the host by the scene's builder as the CPU
 // integrators build them, uploaded once - at the same sample positions, with
-// the partial last slab integrated exactly on the host (ray_setup.hpp).
+// the partial last slab integrated exactly on the host (add_partial_slabs).
 // Empty slabs read all-zero entries and add exactly nothing, so the GPU
 // marches through them and gets the CPU's sum. Lit in both modes (sampled,
 // interpolated), as the CPU's float path.
@@ -14,6 +14,7 @@
 
 #include "compute_kernel.hpp"
 #include "gpu_array.hpp"
+#include "pixel_kernel.hpp"  // PixelSpan
 #include "float_march.hpp"  // FloatLighting
 #include "vulkan_grid_renderer.hpp"
 #include "tables/discrete_tf.hpp"
@@ -55,6 +56,11 @@ class VulkanPreint final : public VulkanGridRenderer {
   std::optional<ComputeKernel> kernel_;  // made once the arrays are on the device
   // The kernel's inputs in binding order, the rays' slot null.
   Bindings inputs() const;
+  // The partial last slabs of the span's pixels composited behind what the
+  // kernel left in `rgba`, as the CPU's finish_float: `tails` holds, a pixel,
+  // the whole slabs the kernel composited (int bits; -1: none to add) and T.
+  void add_partial_slabs(const Camera& camera, PixelSpan span, std::span<float> rgba, std::span<const float> tails,
+                         int threads) const;
 };
 
 }  // namespace vri::vulkan

@@ -38,9 +38,8 @@ SPLIT_INPUT(vec4, table, 4, 4u, 1)
 SPLIT_INPUT(vec4, weighted1, 8, 4u, 2)
 SPLIT_INPUT(vec4, weighted2, 12, 4u, 3)
 SPLIT_INPUT(float, gradients, 16, 2u, 4)  // lit only
-// Per ray (ray_setup.hpp, kEntryRayFloats): u0 (hi x3, lo x3), du per world
-// unit (hi x3, lo x3), the length inside the box (hi, lo; < 0: the ray
-// misses it), the direction (x, y, z).
+// The camera block each ray is made from (camera_rays.glsl,
+// src/methods/march/ray_setup.hpp).
 layout(std430, binding = 20) readonly buffer Rays { float r[]; } rays;
 layout(std430, binding = 21) readonly buffer EmptyCells { uint bits[]; } empty_cells;
 layout(std430, binding = 22) writeonly buffer Image { vec4 px[]; } image;
@@ -54,7 +53,7 @@ vec4 entry_of(int which, uint e) { return which == 0 ? table_at(e) : which == 1 
 #include "table_lookup.glsl"
 #include "shading.glsl"
 
-const uint kRayFloats = 17u;
+#include "camera_rays.glsl"
 
 DF u0[3], du[3];
 vec3 d;
@@ -88,13 +87,11 @@ vec4 lookup(int which, float l, Place f, Place m, Place b) {
 void main() {
   const uint pixel = PIXEL_INDEX();
   if (pixel >= p.pixels) return;
-  const uint r = pixel * kRayFloats;
-  for (int a = 0; a < 3; ++a) {
-    u0[a] = DF(rays.r[r + a], rays.r[r + 3 + a]);
-    du[a] = DF(rays.r[r + 6 + a], rays.r[r + 9 + a]);
-  }
-  const DF t_end = DF(rays.r[r + 12u], rays.r[r + 13u]);
-  d = vec3(rays.r[r + 14u], rays.r[r + 15u], rays.r[r + 16u]);
+  // The ray from its entry into the box: u0 + t du, t in world units up to t_end (< 0: a miss).
+  const PixelRay ray = pixel_ray(pixel);
+  grid_entry(ray, cam_df(kCamScale), u0, du);  // finite on a miss too
+  const DF t_end = ray.hits ? world_length(ray) : DF(-1.0, 0.0);
+  d = float_direction(ray);
   FrontToBack acc = ftb_start();
   CellWalk w = walk_start();
   while (t_end.hi > 0.0 && df_less(w.ta, t_end)) {

@@ -83,14 +83,14 @@ Bindings VulkanPreint2Dual::inputs() const { return table_march_inputs(volume_, 
 Image VulkanPreint2Dual::render(const Camera& camera, const RenderOptions& options) const {
   throw_if_cancelled(options);
   const GridVolume& volume = scene_.grid();
-  const RaySetup rays = [&](PixelSpan span) { return entry_rays(camera, volume, span, options.threads); };
+  const RaySetup rays = [&](PixelSpan span) { return camera_block(camera, grid_box(volume, 0), span); };
   const FloatAxis axis(axis_);
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
            {axis.size(), axis.lo(), axis.scale(), shading_params(shading_, mode_)},
            static_cast<float>(max_length_),
            lengths_,
            empty_->params};
-  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kEntryRayFloats,
+  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays,
                     p.grid, &p);
 }
 

@@ -5,9 +5,9 @@
 // c_k lit (SPEC §5, shading.glsl: c a + b) when p.lit is 1,
 // sample k at u0 + (k + o) du in grid units (o the jitter's fraction, 0
 // without; the partial last step's own o and h_k), until the ray ends or T
-// falls below the termination threshold. The host sets up each ray in double
-// (clipping, sample count, the last step) exactly as the CPU does
-// (src/methods/march/ray_setup.cpp), so only the per-sample float roundings differ.
+// falls below the termination threshold. Each ray is made here from the
+// camera in double-float (camera_rays.glsl: clipping, sample count, the last
+// step as the CPU's double), so only the per-sample float roundings differ.
 // Samples in empty macro cells are leapt over (empty_space.glsl).
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
@@ -29,9 +29,8 @@ SPLIT_INPUT(uint, volume, 0, 2u, 0)
 SPLIT_INPUT(float, gradients, 4, 2u, 1)  // lit only
 layout(std430, binding = 8) readonly buffer Tf { float v[]; } tf;
 layout(std430, binding = 9) readonly buffer TfBins { int first[]; } bins;
-// Per ray (ray_setup.hpp, kRiemannRayFloats): u0 (hi x3, lo x3), du (hi x3,
-// lo x3), o (hi, lo), o of the last step (hi, lo), h_k of the last step,
-// sample count, the direction (x, y, z).
+// The camera block (src/methods/march/ray_setup.hpp), then with jitter each
+// pixel's fraction o (hi, lo).
 layout(std430, binding = 10) readonly buffer Rays { float r[]; } rays;
 layout(std430, binding = 11) readonly buffer EmptyCells { uint bits[]; } empty_cells;
 layout(std430, binding = 12) writeonly buffer Image { vec4 px[]; } image;
@@ -42,24 +41,39 @@ layout(std430, binding = 12) writeonly buffer Image { vec4 px[]; } image;
 #include "grid_sampler.glsl"
 #include "transfer_function.glsl"
 #include "shading.glsl"
+#include "camera_rays.glsl"
 
 DF u0[3], du[3];
 #include "empty_space.glsl"
 
-const uint kRayFloats = 21u;
+// min(h, t1 - (t0 + (n - 1) h)): the length of step n - 1, frame units.
+DF step_length(PixelRay ray, DF h, int n) {
+  return df_min(h, df_sub(ray.t1, df_add(ray.t0, df_mul(df_from_int(n - 1), h))));
+}
 
 void main() {
   const uint pixel = PIXEL_INDEX();
   if (pixel >= p.pixels) return;
-  const uint b = pixel * kRayFloats;
-  const int n = floatBitsToInt(rays.r[b + 17u]);
-  for (int a = 0; a < 3; ++a) {
-    u0[a] = DF(rays.r[b + a], rays.r[b + 3 + a]);
-    du[a] = DF(rays.r[b + 6 + a], rays.r[b + 9 + a]);
+  const PixelRay ray = pixel_ray(pixel);
+  const DF h = cam_df(kCamStep);
+  int n = 0;
+  DF o = DF(0.0, 0.0), o_last = o;
+  float h_last = 0.0;
+  if (ray.hits) {
+    // As float_riemann.hpp: n = max(1, ceil(length / h)); the CPU stops at
+    // the first step with h_k <= 0 (a ray that only grazes the box).
+    n = max(1, -df_floor_int(df_neg(df_div(df_sub(ray.t1, ray.t0), h))));
+    DF h_n = step_length(ray, h, n);
+    if (!(h_n.hi > 0.0)) {
+      --n;
+      h_n = n > 0 ? step_length(ray, h, n) : DF(0.0, 0.0);
+    }
+    if (cam_uint(kCamExtras) != 0u) o = DF(pixel_extra(pixel, 0u), pixel_extra(pixel, 1u));
+    o_last = df_less(h_n, h) ? df_div(df_mul(o, h_n), h) : o;
+    h_last = df_float(df_div(h_n, cam_df(kCamScale)));
+    grid_entry(ray, h, u0, du);
   }
-  const DF o = DF(rays.r[b + 12u], rays.r[b + 13u]), o_last = DF(rays.r[b + 14u], rays.r[b + 15u]);
-  const float h_last = rays.r[b + 16u];
-  const vec3 d = vec3(rays.r[b + 18u], rays.r[b + 19u], rays.r[b + 20u]);
+  const vec3 d = float_direction(ray);
   FrontToBack acc = ftb_start();
   for (int k = 0; k < n; ++k) {
     if (ftb_below(acc, GRID_TERMINATION)) break;

@@ -54,11 +54,11 @@ Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) 
   throw_if_cancelled(options);
   const GridVolume& volume = scene_.grid();
   const RaySetup rays = [&](PixelSpan span) {
-    return riemann_rays(camera, volume, h_, scene_.method.jitter, span, options.threads);
+    return riemann_block(camera, volume, h_, scene_.method.jitter, span, options.threads);
   };
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination), static_cast<float>(h_), tf_.lo,
            tf_.scale, FloatTransferFunction::kBins, tf_.segments, shading_params(shading_, 1), empty_->params};
-  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kRiemannRayFloats,
+  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays,
                     p.grid, &p);
 }
 

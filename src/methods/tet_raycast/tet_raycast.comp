@@ -47,9 +47,8 @@ layout(std430, binding = 11) readonly buffer Faces { float v[]; } faces;
 // coordinates of vertices 1, 2, 3, the point gradient at vertex 0 and those
 // at 1, 2, 3 less it (PointGradients::sample).
 layout(std430, binding = 12) readonly buffer Lighting { float v[]; } lighting;
-// Per ray (kMeshRayFloats): the origin (box-centred, on the ray where it
-// enters the mesh's box or at the eye), the unit direction, 1 or -1 (misses
-// the box).
+// The camera block each ray is made from (camera_rays.glsl,
+// src/methods/march/ray_setup.hpp), clipped to the mesh's widened box.
 layout(std430, binding = 13) readonly buffer Rays { float r[]; } rays;
 layout(std430, binding = 14) writeonly buffer Image { vec4 px[]; } image;
 
@@ -58,8 +57,8 @@ vec4 entry_of(int which, uint e) { return which == 0 ? table_at(e) : weighted_at
 #include "exp_neg.glsl"
 #include "table_lookup.glsl"
 #include "shading.glsl"
-
-const uint kRayFloats = 7u;
+#include "double_float.glsl"
+#include "camera_rays.glsl"
 const float kStop = 1e-7;  // the CPU's: T at most this ends the ray
 
 vec3 o, d;
@@ -215,15 +214,19 @@ void composite(int tet, float t, float t_out, float s, float s_out) {
 void main() {
   const uint pixel = PIXEL_INDEX();
   if (pixel >= p.pixels) return;
-  const uint r = pixel * kRayFloats;
-  o = vec3(rays.r[r], rays.r[r + 1u], rays.r[r + 2u]);
-  d = vec3(rays.r[r + 3u], rays.r[r + 4u], rays.r[r + 5u]);
+  // The origin less the mesh's centre, where the ray enters the box or at
+  // the eye (t0 >= 0), world units: distances along it are the CPU's from there on.
+  const PixelRay ray = pixel_ray(pixel);
+  const DF to_world = df_div(DF(1.0, 0.0), cam_df(kCamScale));
+  for (uint a = 0u; a < 3u; ++a)
+    o[a] = df_float(df_mul(df_sub(df_add(ray.o[a], df_mul(ray.t0, ray.d[a])), cam_df(kCamOrigin + a)), to_world));
+  d = float_direction(ray);
   float t_exit = 0.0, t_entry = -1.0, hit_t;
   int skip = -1, slot;
   // Each entry is further than the one before, so this ends; a face
   // coincident with the one just left (a seam) may be hit a rounding before
   // the exit, hence the slack.
-  while (rays.r[r + 6u] > 0.0 && T > kStop &&
+  while (ray.hits && T > kStop &&
          next_entry(t_exit - 1e-6 * (p.extent + abs(t_exit)), t_entry, skip, hit_t, slot)) {
     t_entry = hit_t;
     int tet = slot / 4, entry_face = slot % 4;

@@ -86,9 +86,7 @@ Bindings VulkanTetRaycast::inputs() const {
 
 Image VulkanTetRaycast::render(const Camera& camera, const RenderOptions& options) const {
   throw_if_cancelled(options);
-  const RaySetup rays = [&](PixelSpan span) {
-    return mesh_rays(camera, scene_.mesh(), mesh_.centre, span, options.threads);
-  };
+  const RaySetup rays = [&](PixelSpan span) { return camera_block(camera, mesh_box(scene_.mesh(), mesh_.centre), span); };
   const FloatAxis axis(axis_);
   GridParams grid{};
   grid.part_shift = device_->part_shift();
@@ -101,7 +99,7 @@ Image VulkanTetRaycast::render(const Camera& camera, const RenderOptions& option
            lengths_,
            static_cast<std::int32_t>(scene_.mesh().size()),
            mesh_.extent};
-  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, kMeshRayFloats,
+  return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays,
                     p.grid, &p);
 }
 
