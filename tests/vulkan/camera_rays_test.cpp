@@ -42,6 +42,8 @@ Scene far_scene(const std::string& origin, const char* method) {
   return scene;
 }
 
+bool lavapipe() { return vulkan::VulkanDevice::shared()->info().name.rfind("llvmpipe", 0) == 0; }
+
 // What rendering `scene` on the GPU uploads, once its renderer is made.
 std::uint64_t frame_upload(const Scene& scene) {
   const SceneRenderer renderer(scene, Backend::Vulkan);
@@ -72,7 +74,16 @@ TEST(CameraRays, FarFromTheOriginTheGpuSamplesWhereTheCpuDoes) {
       Scene scene = far_scene(origin, method);
       scene.method.table_size = 64;
       scene.method.table_size_given = true;
-      EXPECT_LE(gpu_against_cpu(scene).max, 1e-4) << origin << " " << method;
+      const test::Difference d = gpu_against_cpu(scene);
+      EXPECT_LE(d.max, 1e-4) << origin << " " << method;
+      // On lavapipe (IEEE float, no contraction) riemann and preint agree to
+      // the byte near the origin: the rays made in double-float sample where
+      // the double ones do, and preint's partial slab goes on from the
+      // kernel's double-float sums. Far from it the CPU's world positions
+      // round at 1e-10 and the GPU's frame elsewhere: a sample's last bit.
+      const bool same_bytes = lavapipe() && origin == "[0, 0, 0]" && std::string(method) != "preint2-dual";
+      if (same_bytes) EXPECT_EQ(d.differing, 0u) << method;
+      else EXPECT_LE(d.max, 1e-6) << origin << " " << method;
     }
     Scene jittered = far_scene(origin, "riemann");
     jittered.method.jitter = 99;

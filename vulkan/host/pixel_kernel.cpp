@@ -28,9 +28,13 @@ Image run_pixels(const std::shared_ptr<const VulkanDevice>& device, const Comput
                  const void* params, const HostFinish* finish) {
   const std::size_t pixels = static_cast<std::size_t>(width) * height;
   const std::size_t pixel_bytes = 4 * sizeof(float);
-  const std::size_t chunk = std::max<std::size_t>(
-      64, std::min<std::size_t>({pixels, kChunkPixels, device->max_storage_buffer_bytes() / pixel_bytes}));
   const std::size_t tail_floats = finish ? static_cast<std::size_t>(finish->floats) : 0;
+  // Each of the chunk's buffers fits one storage buffer: the image, the
+  // rays' ends, and the camera block (its extras, at most 8 bytes a pixel,
+  // fit where the image's 16 do).
+  const std::size_t widest = std::max(pixel_bytes, tail_floats * sizeof(float));
+  const std::size_t chunk = std::max<std::size_t>(
+      64, std::min<std::size_t>({pixels, kChunkPixels, device->max_storage_buffer_bytes() / widest}));
   Image image(width, height);
   std::vector<float> tails;
   for (std::size_t first = 0; first < pixels; first += chunk) {

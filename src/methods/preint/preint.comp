@@ -43,8 +43,9 @@ SPLIT_INPUT(float, gradients, 16, 2u, 4)  // lit only
 layout(std430, binding = 20) readonly buffer Rays { float r[]; } rays;
 layout(std430, binding = 21) readonly buffer EmptyCells { uint bits[]; } empty_cells;
 layout(std430, binding = 22) writeonly buffer Image { vec4 px[]; } image;
-// Per pixel: the whole slabs composited (int bits; -1: add no partial slab), T.
-layout(std430, binding = 23) writeonly buffer Tails { vec2 v[]; } tails;
+// Per pixel, 9 floats: the whole slabs composited (int bits; -1: add no
+// partial slab), then T, r, g, b so far, each hi and lo (the host goes on in double).
+layout(std430, binding = 23) writeonly buffer Tails { float v[]; } tails;
 
 vec4 entry_of(int which, uint e) { return which == 0 ? table_at(e) : which == 1 ? weighted1_at(e) : weighted2_at(e); }
 
@@ -162,6 +163,12 @@ void main() {
   }
   // The host adds the partial slab unless the ray missed or stopped early.
   const bool tail = full >= 0 && !ftb_below(acc, GRID_TERMINATION);
-  tails.v[pixel] = vec2(intBitsToFloat(tail ? full : -1), df_float(acc.T));
+  const uint at = 9u * pixel;
+  tails.v[at] = intBitsToFloat(tail ? full : -1);
+  const DF sums[4] = DF[4](acc.T, acc.r, acc.g, acc.b);
+  for (uint k = 0u; k < 4u; ++k) {
+    tails.v[at + 1u + 2u * k] = sums[k].hi;
+    tails.v[at + 2u + 2u * k] = sums[k].lo;
+  }
   image.px[pixel] = ftb_pixel(acc);
 }

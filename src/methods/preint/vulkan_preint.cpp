@@ -110,7 +110,7 @@ Image VulkanPreint::render(const Camera& camera, const RenderOptions& options) c
   throw_if_cancelled(options);
   const GridVolume& volume = scene_.grid();
   const RaySetup rays = [&](PixelSpan span) { return camera_block(camera, grid_box(volume, h_), span); };
-  const HostFinish finish{2, [&](PixelSpan span, std::span<float> rgba, std::span<const float> tails) {
+  const HostFinish finish{9, [&](PixelSpan span, std::span<float> rgba, std::span<const float> tails) {
                             add_partial_slabs(camera, span, rgba, tails, options.threads);
                           }};
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
@@ -126,7 +126,8 @@ void VulkanPreint::add_partial_slabs(const Camera& camera, PixelSpan span, std::
   const auto width = static_cast<std::size_t>(camera.width());
   volume.visit([&](auto values) {
     const auto pixel = [&](std::size_t i) {
-      const auto full = std::bit_cast<std::int32_t>(tails[2 * i]);
+      const std::span<const float> tail = tails.subspan(9 * i, 9);
+      const auto full = std::bit_cast<std::int32_t>(tail[0]);
       if (full < 0) return;  // a miss, or T fell below the termination threshold
       const std::size_t p = span.first + i;
       const Ray ray = camera.ray(static_cast<int>(p % width), static_cast<int>(p / width));
@@ -136,9 +137,11 @@ void VulkanPreint::add_partial_slabs(const Camera& camera, PixelSpan span, std::
       const detail::FloatSample front =
           detail::sample_at(sampler_, values.data(), lighting_, detail::direction(ray),
                             u0 + static_cast<double>(static_cast<long long>(full) * steps_) * du);
+      // The kernel's double-float sums, as the CPU's double ones.
+      const auto sum = [&](int k) { return double(tail[1 + 2 * k]) + double(tail[2 + 2 * k]); };
       detail::FrontToBack acc;
-      for (int c = 0; c < 3; ++c) acc.C[c] = rgba[4 * i + c];
-      acc.T = tails[2 * i + 1];
+      acc.T = sum(0);
+      for (int c = 0; c < 3; ++c) acc.C[c] = sum(1 + c);
       const auto add = [&](const auto& slabs) {
         for (const SlabRgba& v : slabs) acc.add(v.r, v.g, v.b, v.a);
       };

@@ -58,7 +58,8 @@ class VulkanPreint final : public VulkanGridRenderer {
   Bindings inputs() const;
   // The partial last slabs of the span's pixels composited behind what the
   // kernel left in `rgba`, as the CPU's finish_float: `tails` holds, a pixel,
-  // the whole slabs the kernel composited (int bits; -1: none to add) and T.
+  // the whole slabs the kernel composited (int bits; -1: none to add) and its
+  // T, r, g, b in double-float.
   void add_partial_slabs(const Camera& camera, PixelSpan span, std::span<float> rgba, std::span<const float> tails,
                          int threads) const;
 };
