@@ -116,6 +116,7 @@ class TetMesh;
 class TransferFunction;
 struct Lighting;
 class GpuSceneRenderer;
+class ProjectedSceneRenderer;
 struct Scene;
 
 // A method's constructors (pbrt-v4's Create()): each lives in the method's
@@ -125,6 +126,7 @@ using GridIntegratorMaker = std::unique_ptr<Integrator> (*)(const MethodSpec&, c
 using MeshIntegratorMaker = std::unique_ptr<Integrator> (*)(const MethodSpec&, const TetMesh&,
                                                             const TransferFunction&, const Lighting&);
 using GpuRendererMaker = std::unique_ptr<GpuSceneRenderer> (*)(const Scene&);
+using ProjectedRendererMaker = std::unique_ptr<ProjectedSceneRenderer> (*)(const Scene&);
 
 struct MethodInfo {
   std::string_view name;
@@ -147,11 +149,13 @@ struct MethodInfo {
   // max_samples and max_work cap every method; termination, skip_empty,
   // float_math and jitter are the fast path's (the flags above).
   std::vector<std::string_view> parameters = {};
-  // Its per-ray integrator on a grid and on a mesh, and its GPU renderer (on
-  // what gpu_grid and gpu_mesh say; null in a build without Vulkan); null
-  // where it has none. make_integrator and the Vulkan backend call them.
+  // Its per-ray integrator on a grid and on a mesh, its whole-cell renderer
+  // (per_ray false), and its GPU renderer (on what gpu_grid and gpu_mesh
+  // say; null in a build without Vulkan); null where it has none.
+  // make_integrator, SceneRenderer and the Vulkan backend call them.
   GridIntegratorMaker make_grid = nullptr;
   MeshIntegratorMaker make_mesh = nullptr;
+  ProjectedRendererMaker make_projected = nullptr;
   GpuRendererMaker make_gpu = nullptr;
 };
 

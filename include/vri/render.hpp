@@ -164,6 +164,14 @@ class GpuSceneRenderer {
   virtual std::string device_name() const = 0;
 };
 
+// One scene made ready for a method that projects whole cells (pt,
+// pt-cylindrical; MethodInfo::make_projected): its tables built.
+class ProjectedSceneRenderer {
+ public:
+  virtual ~ProjectedSceneRenderer() = default;
+  virtual Image render(const Camera& camera, const RenderOptions& options) const = 0;
+};
+
 // vri::Error with one line when this build has no Vulkan backend, no device
 // is usable, or the scene's method or options are not on the GPU yet.
 std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene);
@@ -302,11 +310,10 @@ class SceneRenderer {
 
  private:
   void prepare(Backend backend);  // the integrator, projected tables or GPU renderer
-  struct Projected;  // pt, pt-cylindrical: tables over the mesh
   const Scene& scene_;
   Camera camera_;
   std::unique_ptr<Integrator> integrator_;
-  std::unique_ptr<Projected> projected_;
+  std::unique_ptr<ProjectedSceneRenderer> projected_;  // pt, pt-cylindrical
   std::unique_ptr<GpuSceneRenderer> gpu_;
 };
 

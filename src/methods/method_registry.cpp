@@ -8,6 +8,7 @@
 #include "preint/preint1.hpp"
 #include "preint/preint2.hpp"
 #include "preint2_dual/preint2_dual.hpp"
+#include "projected/projected_scene_renderer.hpp"
 #include "riemann/riemann.hpp"
 #include "tet_raycast/tet_raycast.hpp"
 #include "vri/error.hpp"
@@ -50,9 +51,11 @@ const std::vector<MethodInfo>& methods() {
        .make_grid = make_exact, .make_mesh = make_mesh_exact},
       {.name = "pt", .paper = "projected tetrahedra (Shirley & Tuchman 1990) with the (l, s_f, s_b) table "
                               "(Roettger & Ertl 2002)",
-       .mesh = true, .per_ray = false, .parameters = {"table_size", "length_samples", "builder"}},
+       .mesh = true, .per_ray = false, .parameters = {"table_size", "length_samples", "builder"},
+       .make_projected = make_pt},
       {.name = "pt-cylindrical", .paper = "projected tetrahedra on the cylindrical table (Roettger & Ertl 2002, §4)",
-       .mesh = true, .per_ray = false, .parameters = {"table_size", "length_samples", "planes", "builder"}},
+       .mesh = true, .per_ray = false, .parameters = {"table_size", "length_samples", "planes", "builder"},
+       .make_projected = make_pt_cylindrical},
       {.name = "tet-raycast", .paper = "cell-to-cell ray casting (Garrity 1990) with the (l, s_f, s_b) table",
        .mesh = true, .gpu_mesh = true, .parameters = {"table_size", "length_samples", "builder"},
        .make_mesh = make_tet_raycast, .make_gpu = VRI_GPU(make_vulkan_tet_raycast)},

@@ -7,18 +7,9 @@
 
 #include "vri/error.hpp"
 #include "vri/methods.hpp"
-#include "methods/mesh_tables.hpp"
-#include "methods/projected/projected_tetrahedra.hpp"
 #include "render/error_estimate.hpp"
 
 namespace vri {
-
-struct SceneRenderer::Projected {
-  std::unique_ptr<SlabTable> table;
-  std::unique_ptr<WeightedLengthTables> weighted;  // lighting mode interpolated
-  std::optional<CylindricalTable> cylinder;        // pt-cylindrical
-  std::optional<WeightedCylindricalTables> weighted_cylinder;
-};
 
 namespace {
 
@@ -59,17 +50,7 @@ void SceneRenderer::prepare(Backend backend) {
   check_volume_kind(m, std::holds_alternative<TetMesh>(scene.volume));
   check_jitter(m);
   check_termination(m);
-  projected_ = std::make_unique<Projected>();
-  Projected& p = *projected_;
-  p.table = make_slab_table(m, scene.mesh(), scene.transfer_function);
-  p.weighted = make_weighted_length_tables(m, scene.mesh(), scene.transfer_function, scene.lighting);
-  if (m.name == "pt-cylindrical") {
-    const int size = m.table_size, planes = m.planes > 0 ? m.planes : size;
-    p.cylinder.emplace(*p.table, size, planes);
-    if (p.weighted)
-      p.weighted_cylinder.emplace(CylindricalTable(p.weighted->front, size, planes),
-                                  CylindricalTable(p.weighted->back, size, planes));
-  }
+  projected_ = known_method(m.name).make_projected(scene);
 }
 
 SceneRenderer::~SceneRenderer() = default;
@@ -84,13 +65,9 @@ Image SceneRenderer::render(const RenderOptions& options) const { return render(
 
 Image SceneRenderer::render(const Camera& camera, const RenderOptions& options) const {
   if (&camera != &camera_) check_work(scene_, camera);
-  const Projected* p = projected_.get();
-  const Image image =
-      gpu_          ? gpu_->render(camera, options)
-      : !p          ? vri::render(camera, *integrator_, options)
-      : p->cylinder ? render_projected(camera, scene_.mesh(), *p->cylinder, options, scene_.lighting,
-                                       p->weighted_cylinder ? &*p->weighted_cylinder : nullptr)
-                    : render_projected(camera, scene_.mesh(), *p->table, options, scene_.lighting, p->weighted.get());
+  const Image image = gpu_         ? gpu_->render(camera, options)
+                      : projected_ ? projected_->render(camera, options)
+                                   : vri::render(camera, *integrator_, options);
   refuse_non_finite(image, "the rendered image");
   return image;
 }

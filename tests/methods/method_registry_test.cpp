@@ -70,13 +70,14 @@ class EveryMethod : public ::testing::TestWithParam<std::string> {
 };
 
 // A method's constructors are where its flags say it renders: one
-// registration holds both, and make_integrator and the Vulkan backend call
-// nothing else.
+// registration holds both, and make_integrator, SceneRenderer (pt,
+// pt-cylindrical) and the Vulkan backend call nothing else.
 TEST(MethodRegistry, ConstructorsAreWhereTheFlagsSay) {
   for (const vri::MethodInfo& m : vri::methods()) {
     SCOPED_TRACE(std::string(m.name));
     EXPECT_EQ(m.make_grid != nullptr, m.grid && m.per_ray);
     EXPECT_EQ(m.make_mesh != nullptr, m.mesh && m.per_ray);
+    EXPECT_EQ(m.make_projected != nullptr, !m.per_ray);
     EXPECT_EQ(m.make_gpu != nullptr, vri::vulkan_backend_built() && (m.gpu_grid || m.gpu_mesh));
   }
 }
