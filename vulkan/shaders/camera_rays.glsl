@@ -10,12 +10,14 @@
 // the buffer that holds the block and, after it, `extras` floats a pixel
 // (riemann's jitter fractions).
 
-const uint kCameraFloats = 64u;
-// Double-float slots (hi at 2 slot, lo at 2 slot + 1).
-const uint kCamEye = 0u, kCamU = 3u, kCamV = 6u, kCamW = 9u, kCamAspect = 12u, kCamHalfH = 13u;
-const uint kCamBoxLo = 14u, kCamBoxHi = 17u, kCamOrigin = 20u, kCamInverse = 23u, kCamStep = 26u, kCamScale = 27u;
-// Unsigned ints (float bits).
-const uint kCamWidth = 56u, kCamHeight = 57u, kCamFirst = 58u, kCamOrtho = 59u, kCamExtras = 60u;
+#include "camera_block.h"
+const uint kCameraFloats = VRI_CAMERA_FLOATS;
+const uint kCamEye = VRI_CAM_EYE, kCamU = VRI_CAM_U, kCamV = VRI_CAM_V, kCamW = VRI_CAM_W;
+const uint kCamAspect = VRI_CAM_ASPECT, kCamHalfH = VRI_CAM_HALF_H, kCamBoxLo = VRI_CAM_BOX_LO;
+const uint kCamBoxHi = VRI_CAM_BOX_HI, kCamOrigin = VRI_CAM_ORIGIN, kCamInverse = VRI_CAM_INVERSE;
+const uint kCamStep = VRI_CAM_STEP, kCamScale = VRI_CAM_SCALE, kCamWidth = VRI_CAM_WIDTH;
+const uint kCamHeight = VRI_CAM_HEIGHT, kCamFirst = VRI_CAM_FIRST, kCamOrtho = VRI_CAM_ORTHO;
+const uint kCamExtras = VRI_CAM_EXTRAS;
 
 DF cam_df(uint slot) { return DF(rays.r[2u * slot], rays.r[2u * slot + 1u]); }
 uint cam_uint(uint at) { return floatBitsToUint(rays.r[at]); }

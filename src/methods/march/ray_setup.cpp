@@ -14,10 +14,14 @@ namespace vri::vulkan {
 
 namespace {
 
-// camera_rays.glsl's slots.
-enum Slot { kEye = 0, kU = 3, kV = 6, kW = 9, kAspect = 12, kHalfH = 13, kBoxLo = 14, kBoxHi = 17, kOrigin = 20,
-            kInverse = 23, kStep = 26, kScale = 27 };
-enum Word { kWidth = 56, kHeight = 57, kFirst = 58, kOrtho = 59, kExtras = 60 };
+// The block's slots and words (camera_block.h, shared with camera_rays.glsl).
+enum Slot {
+  kEye = VRI_CAM_EYE, kU = VRI_CAM_U, kV = VRI_CAM_V, kW = VRI_CAM_W, kAspect = VRI_CAM_ASPECT,
+  kHalfH = VRI_CAM_HALF_H, kBoxLo = VRI_CAM_BOX_LO, kBoxHi = VRI_CAM_BOX_HI, kOrigin = VRI_CAM_ORIGIN,
+  kInverse = VRI_CAM_INVERSE, kStep = VRI_CAM_STEP, kScale = VRI_CAM_SCALE
+};
+enum Word { kWidth = VRI_CAM_WIDTH, kHeight = VRI_CAM_HEIGHT, kFirst = VRI_CAM_FIRST, kOrtho = VRI_CAM_ORTHO,
+            kExtras = VRI_CAM_EXTRAS };
 
 // x as the double-float hi + lo at out[0], out[1].
 void put(float* out, double x) {

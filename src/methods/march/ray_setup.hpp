@@ -10,14 +10,15 @@
 #include <optional>
 #include <vector>
 
+#include "camera_block.h"  // vulkan/shaders/: its layout, shared with the kernels
 #include "pixel_kernel.hpp"  // PixelSpan
 #include "vri/camera.hpp"
 #include "vri/volume.hpp"
 
 namespace vri::vulkan {
 
-// The block's floats (camera_rays.glsl, kCameraFloats); a pixel's extras follow it.
-inline constexpr int kCameraFloats = 64;
+// The block's floats (vulkan/shaders/camera_block.h); a pixel's extras follow it.
+inline constexpr int kCameraFloats = VRI_CAMERA_FLOATS;
 
 // The box the rays are clipped to, and the grid they are marched through.
 struct RayBox {

@@ -1,7 +1,7 @@
 #pragma once
 // riemann on a Vulkan device (src/methods/riemann/riemann.comp): the CPU float
 // path's sum (src/methods/riemann/float_riemann.hpp) at the same sample
-// positions - rays set up on the host (ray_setup.hpp), one invocation per
+// positions - each ray made on the GPU from the camera (camera_rays.glsl), one invocation per
 // pixel - lit or not, with jitter and early termination as on the CPU. Skipped samples
 // (empty space) add exactly nothing there, so the GPU takes them all and
 // gets the same sum.
