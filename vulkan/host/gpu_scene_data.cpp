@@ -87,10 +87,11 @@ std::vector<std::uint32_t> empty_bits(const GridVolume& volume, const EmptySpace
 GpuEmptySpace::GpuEmptySpace(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume,
                              const EmptySpace* space)
     : bits(std::move(device), as_bytes_of(empty_bits(volume, space)), "the empty macro cells") {
+  params = {0, {1, 1, 1}};  // off
   if (!space) return;
-  params.on = 1;
+  params.skip = 1;
   const MacroCells cells(volume);
-  for (int a = 0; a < 3; ++a) params.dims[a] = cells.dims()[a];
+  for (int a = 0; a < 3; ++a) params.macro[a] = cells.dims()[a];
 }
 
 Bindings table_march_inputs(const GpuVolume& volume, const std::array<std::optional<GpuArray>, 3>& tables,

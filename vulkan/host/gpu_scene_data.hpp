@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "gpu_array.hpp"
+#include "push_constants.h"  // ShadingParams, SkipParams, TfParams
 #include "gpu_buffer.hpp"
 #include "shading/headlight_shader.hpp"
 #include "transfer/float_transfer_function.hpp"
@@ -42,12 +43,8 @@ struct GpuShading {
   float ka, kd, ks, shininess, flat;
 };
 
-// The shaders' lighting push constants (shading.glsl: `int lit; float ka,
-// kd, ks, shininess, flat_threshold;`): lit 0 without `shading`, else `mode`.
-struct ShadingParams {
-  std::int32_t lit = 0;
-  float ka = 0, kd = 0, ks = 0, shininess = 0, flat = 0;
-};
+// The shaders' lighting push constants (push_constants.h): lit 0 without
+// `shading`, else `mode`.
 ShadingParams shading_params(const std::optional<GpuShading>& shading, int mode);
 
 
@@ -55,22 +52,11 @@ ShadingParams shading_params(const std::optional<GpuShading>& shading, int mode)
 // cells (macro_cells.hpp, 8 grid cells a side) the CPU classified against the
 // method's transfer function or table (EmptySpace), one bit each. `space`
 // null (skipping off): one word, nothing empty.
-// Its push constants (empty_space.glsl: `int skip, macro_x, macro_y, macro_z;`).
-struct SkipParams {
-  std::int32_t on = 0;               // 1: skip
-  std::int32_t dims[3] = {1, 1, 1};  // macro cells per axis
-};
+// Its push constants: SkipParams (push_constants.h).
 struct GpuEmptySpace {
   GpuEmptySpace(std::shared_ptr<const VulkanDevice> device, const GridVolume& volume, const EmptySpace* space);
   GpuBuffer bits;
   SkipParams params;
-};
-
-// The shaders' transfer-function push constants (transfer_function.glsl:
-// `float tf_lo, tf_scale; int tf_bins, segments;`).
-struct TfParams {
-  float lo, scale;
-  std::int32_t bins, segments;
 };
 
 struct GpuTransferFunction {
@@ -80,14 +66,6 @@ struct GpuTransferFunction {
   int segments;
   float lo, scale;
   TfParams params() const { return {lo, scale, FloatTransferFunction::kBins, segments}; }
-};
-
-// The pre-integrated marches' push constants after GridParams (preint.comp,
-// preint2_dual.comp: the table axis, then the lighting).
-struct TableParams {
-  std::int32_t table_n;
-  float table_lo, table_scale;
-  ShadingParams shading;  // lit 1: sampled, 2: interpolated
 };
 
 // Their inputs in binding order: the volume, three tables (the table, or

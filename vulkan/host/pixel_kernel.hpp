@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "compute_kernel.hpp"
+#include "push_constants.h"  // GridParams
 #include "vri/image.hpp"
 #include "vri/volume.hpp"
 
@@ -22,19 +23,7 @@ struct PixelSpan {
   std::size_t first = 0, count = 0;
 };
 
-struct GridParams {
-  std::uint32_t sy, sz;
-  std::int32_t type;
-  std::uint32_t pixels;
-  float termination_lo;  // the threshold in double-float: termination + termination_lo
-  float unused[2];
-  std::uint32_t row_pixels;
-  std::int32_t last_cell[3];
-  float termination;
-  std::uint32_t part_shift;  // log2 of a GpuArray part's bytes (gpu_array.hpp)
-};
-static_assert(sizeof(GridParams) == 52 && offsetof(GridParams, termination_lo) == 16 &&
-              offsetof(GridParams, last_cell) == 32);
+// GridParams: push_constants.h (VRI_GRID_FIELDS), shared with the kernels.
 
 // The volume's part of GridParams (the dispatch's part is set by run_pixels).
 GridParams grid_params(const VulkanDevice& device, const GridVolume& volume, int type, double termination);

@@ -1,4 +1,5 @@
 #include "vulkan_table_builders.hpp"
+#include "table_builder_push_constants.h"
 
 #include <cstdint>
 #include <span>
@@ -33,23 +34,17 @@ const std::uint32_t kSecondOrderSpirv[] = {
 };
 
 struct SlicedParams {
-  std::uint32_t part_shift;
-  std::int32_t table_n, steps;
-  float dl;
-  std::uint32_t base;
+  VRI_SLICED_TABLE_PUSH_CONSTANTS
 };
 
 struct IncrementalParams {
-  std::uint32_t part_shift;
-  std::int32_t table_n;
-  float slab_length;
+  VRI_INCREMENTAL_TABLE_PUSH_CONSTANTS
 };
 // incremental_table.comp's bindings: the table (four), the transfer function (three), six scratch arrays.
 constexpr int kIncrementalBindings = GpuArray::kParts + 3 + 6;
 
 struct SecondOrderParams {
-  std::uint32_t part_shift;
-  std::int32_t table_n, iterations;
+  VRI_SECOND_ORDER_TABLE_PUSH_CONSTANTS
 };
 
 std::uint32_t groups_of_64(int n) { return static_cast<std::uint32_t>((n + 63) / 64); }

@@ -9,7 +9,7 @@
 // jitter's offset), kept short of the exit by 1e-3 + 1e-5 |s| samples so
 // that float roundings of the exit never carry it past a sample outside.
 // Needs before it: the macro cells' bits buffer `empty_cells`, and in `p`:
-// skip (0: off), macro_x, macro_y; DF u0[3], du[3] (double_float.glsl); Cell
+// skip (0: off), macro[3]; DF u0[3], du[3] (double_float.glsl); Cell
 // (grid_sampler.glsl).
 
 const int kMacroCells = 8;  // grid cells a side (MacroCells::kCells)
@@ -17,7 +17,7 @@ const int kMacroCells = 8;  // grid cells a side (MacroCells::kCells)
 // Macro cell m (its index per axis) is empty and skipping is on.
 bool macro_bit(ivec3 m) {
   if (p.skip == 0) return false;
-  const uint i = uint(m.x + p.macro_x * (m.y + p.macro_y * m.z));
+  const uint i = uint(m.x + p.macro[0] * (m.y + p.macro[1] * m.z));
   return (empty_cells.bits[i >> 5] & (1u << (i & 31u))) != 0u;
 }
 

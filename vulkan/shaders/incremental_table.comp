@@ -19,11 +19,8 @@
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 
-layout(push_constant) uniform Params {
-  uint part_shift;  // split_array.glsl
-  int table_n;      // entries a side, N
-  float slab_length;  // world units
-} p;
+#include "table_builder_push_constants.h"
+layout(push_constant) uniform Params { VRI_INCREMENTAL_TABLE_PUSH_CONSTANTS } p;
 
 #include "split_array.glsl"
 SPLIT_OUTPUT(vec4, entries, 0, 4u)

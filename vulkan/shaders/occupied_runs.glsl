@@ -47,7 +47,7 @@ bool macro_next(inout MacroWalk w, DF t_max, out MacroRun run) {
     w.done = true;
     return true;
   }
-  const ivec3 dims = ivec3(p.macro_x, p.macro_y, p.macro_z);
+  const ivec3 dims = ivec3(p.macro[0], p.macro[1], p.macro[2]);
   run.empty = macro_bit(w.m);
   for (;;) {
     // The face crossed first (the lower axis on ties).

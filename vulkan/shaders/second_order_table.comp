@@ -13,11 +13,8 @@
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 
-layout(push_constant) uniform Params {
-  uint part_shift;  // split_array.glsl
-  int table_n;      // entries a side
-  int iterations;   // K
-} p;
+#include "table_builder_push_constants.h"
+layout(push_constant) uniform Params { VRI_SECOND_ORDER_TABLE_PUSH_CONSTANTS } p;
 
 #include "split_array.glsl"
 SPLIT_OUTPUT(vec4, entries, 0, 4u)

@@ -12,13 +12,8 @@
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 
-layout(push_constant) uniform Params {
-  uint part_shift;  // split_array.glsl
-  int table_n;      // entries a side
-  int steps;        // n
-  float dl;         // l / n, world units
-  uint base;        // this length's first entry (a table of several lengths)
-} p;
+#include "table_builder_push_constants.h"
+layout(push_constant) uniform Params { VRI_SLICED_TABLE_PUSH_CONSTANTS } p;
 
 #include "split_array.glsl"
 SPLIT_OUTPUT(vec4, entries, 0, 4u)

@@ -26,16 +26,8 @@
 layout(local_size_x = 64) in;
 
 #include "grid_params.glsl"
-layout(push_constant) uniform Params {
-  GRID_PARAMS
-  float tf_lo, tf_scale;
-  int tf_bins, segments;
-  int lit;  // 0: unlit; 1: each sample lit
-  float ka, kd, ks, shininess, flat_threshold;
-  float tolerance, hmax, hfloor;  // world units
-  float margin;                   // rounding of interpolated scalars (EmptySpace's)
-  int skip, macro_x, macro_y, macro_z;  // empty_space.glsl
-} p;
+#include "adaptive_push_constants.h"
+layout(push_constant) uniform Params { VRI_ADAPTIVE_GUARANTEED_PUSH_CONSTANTS } p;
 
 #include "split_array.glsl"
 SPLIT_INPUT(uint, volume, 0, 2u, 0)

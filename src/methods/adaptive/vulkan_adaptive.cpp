@@ -1,4 +1,5 @@
 #include "vulkan_adaptive.hpp"
+#include "adaptive_push_constants.h"
 #include "vulkan_adaptive_guaranteed.hpp"
 
 #include <cmath>
@@ -23,12 +24,7 @@ const std::uint32_t kSpirv[] = {
 
 // adaptive.comp's push constants.
 struct Params {
-  GridParams grid;
-  TfParams tf;
-  ShadingParams shading;  // lit 1: each sample lit
-  float tolerance, h0, hmin, hmax;  // world units
-  std::int32_t coupled;
-  SkipParams skip;
+  VRI_ADAPTIVE_PUSH_CONSTANTS
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 

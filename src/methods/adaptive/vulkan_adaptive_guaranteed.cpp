@@ -1,5 +1,6 @@
 #include "vulkan_adaptive_guaranteed.hpp"
 
+#include "adaptive_push_constants.h"
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -24,12 +25,7 @@ const std::uint32_t kSpirv[] = {
 
 // adaptive_guaranteed.comp's push constants.
 struct Params {
-  GridParams grid;
-  TfParams tf;
-  ShadingParams shading;  // lit 1: each sample lit
-  float tolerance, hmax, hfloor;  // world units
-  float margin;
-  SkipParams skip;
+  VRI_ADAPTIVE_GUARANTEED_PUSH_CONSTANTS
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 

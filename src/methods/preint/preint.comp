@@ -21,15 +21,8 @@
 layout(local_size_x = 64) in;
 
 #include "grid_params.glsl"
-layout(push_constant) uniform Params {
-  GRID_PARAMS
-  int table_n;  // entries a side
-  float table_lo, table_scale;
-  int lit;  // 0: unlit, 1: sampled, 2: interpolated
-  float ka, kd, ks, shininess, flat_threshold;
-  int skip;           // empty-space skipping: 1 on
-  int macro_x, macro_y, macro_z;  // macro cells per axis (ints: an ivec3 would sit on 16 bytes)
-} p;
+#include "preint_push_constants.h"
+layout(push_constant) uniform Params { VRI_PREINT_PUSH_CONSTANTS } p;
 
 #include "split_array.glsl"
 SPLIT_INPUT(uint, volume, 0, 2u, 0)

@@ -1,4 +1,5 @@
 #include "vulkan_preint.hpp"
+#include "preint_push_constants.h"
 #include "preint1.hpp"  // make_vulkan_preint
 
 #include <tbb/blocked_range.h>
@@ -31,9 +32,7 @@ const std::uint32_t kPreint2Spirv[] = {
 
 // preint.comp's push constants.
 struct Params {
-  GridParams grid;
-  TableParams table;
-  SkipParams skip;
+  VRI_PREINT_PUSH_CONSTANTS
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
@@ -114,7 +113,8 @@ Image VulkanPreint::render(const Camera& camera, const RenderOptions& options) c
                             add_partial_slabs(camera, span, rgba, tails, options.threads);
                           }};
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
-           {axis_->size(), axis_->lo(), axis_->scale(), shading_params(shading_, lighting_.interpolated() ? 2 : 1)},
+           {axis_->size(), axis_->lo(), axis_->scale()},
+           shading_params(shading_, lighting_.interpolated() ? 2 : 1),
            empty_->params};
   return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays, p.grid, &p,
                     &finish);

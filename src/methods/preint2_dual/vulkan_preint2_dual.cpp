@@ -1,5 +1,6 @@
 #include "vulkan_preint2_dual.hpp"
 
+#include "preint2_dual_push_constants.h"
 #include <cstdint>
 #include <span>
 
@@ -22,11 +23,7 @@ const std::uint32_t kSpirv[] = {
 
 // preint2_dual.comp's push constants.
 struct Params {
-  GridParams grid;
-  TableParams table;
-  float max_length;
-  std::int32_t lengths;
-  SkipParams skip;
+  VRI_PREINT2_DUAL_PUSH_CONSTANTS
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
@@ -86,7 +83,8 @@ Image VulkanPreint2Dual::render(const Camera& camera, const RenderOptions& optio
   const RaySetup rays = [&](PixelSpan span) { return camera_block(camera, grid_box(volume, 0), span); };
   const FloatAxis axis(axis_);
   Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination),
-           {axis.size(), axis.lo(), axis.scale(), shading_params(shading_, mode_)},
+           {axis.size(), axis.lo(), axis.scale()},
+           shading_params(shading_, mode_),
            static_cast<float>(max_length_),
            lengths_,
            empty_->params};

@@ -13,16 +13,8 @@
 layout(local_size_x = 64) in;
 
 #include "grid_params.glsl"
-layout(push_constant) uniform Params {
-  GRID_PARAMS
-  float h;  // the step, world units
-  float tf_lo, tf_scale;
-  int tf_bins, segments;
-  int lit;  // 0: unlit; 1: each sample lit
-  float ka, kd, ks, shininess, flat_threshold;
-  int skip;           // empty-space skipping: 1 on
-  int macro_x, macro_y, macro_z;  // macro cells per axis (ints: an ivec3 would sit on 16 bytes)
-} p;
+#include "riemann_push_constants.h"
+layout(push_constant) uniform Params { VRI_RIEMANN_PUSH_CONSTANTS } p;
 
 #include "split_array.glsl"
 SPLIT_INPUT(uint, volume, 0, 2u, 0)

@@ -1,4 +1,5 @@
 #include "vulkan_riemann.hpp"
+#include "riemann_push_constants.h"
 #include "riemann.hpp"  // make_vulkan_riemann
 
 #include <cstddef>
@@ -21,12 +22,7 @@ const std::uint32_t kSpirv[] = {
 
 // riemann.comp's push constants.
 struct Params {
-  GridParams grid;
-  float h;
-  float tf_lo, tf_scale;
-  std::int32_t tf_bins, segments;
-  ShadingParams shading;  // lit 1: each sample lit
-  SkipParams skip;
+  VRI_RIEMANN_PUSH_CONSTANTS
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
@@ -56,8 +52,8 @@ Image VulkanRiemann::render(const Camera& camera, const RenderOptions& options) 
   const RaySetup rays = [&](PixelSpan span) {
     return riemann_block(camera, volume, h_, scene_.method.jitter, span, options.threads);
   };
-  Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination), static_cast<float>(h_), tf_.lo,
-           tf_.scale, FloatTransferFunction::kBins, tf_.segments, shading_params(shading_, 1), empty_->params};
+  Params p{grid_params(*device_, volume, volume_.type, scene_.method.fast.termination), static_cast<float>(h_),
+           tf_.params(), shading_params(shading_, 1), empty_->params};
   return run_pixels(device_, *kernel_, camera.width(), camera.height(), inputs().list(), rays,
                     p.grid, &p);
 }

@@ -19,17 +19,8 @@
 layout(local_size_x = 64) in;
 
 #include "grid_params.glsl"
-layout(push_constant) uniform Params {
-  GRID_PARAMS  // the dispatch's part (pixels, row_pixels) and part_shift; no volume
-  int table_n;
-  float table_lo, table_scale;
-  int lit;  // 0: unlit, 1: sampled, 2: interpolated
-  float ka, kd, ks, shininess, flat_threshold;
-  float max_length;  // the tables' longest length (world units)
-  int lengths;       // table slices
-  int tets;          // the walk's bound, as the CPU's
-  float extent;      // the mesh box's diagonal: the scale of float roundings in t
-} p;
+#include "tet_raycast_push_constants.h"
+layout(push_constant) uniform Params { VRI_TET_RAYCAST_PUSH_CONSTANTS } p;
 
 #include "split_array.glsl"
 // Unlit and sampled: the table (slot 0); interpolated: the front and back weighted tables.

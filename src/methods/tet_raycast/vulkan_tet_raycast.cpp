@@ -1,4 +1,5 @@
 #include "vulkan_tet_raycast.hpp"
+#include "tet_raycast_push_constants.h"
 #include "tet_raycast.hpp"  // make_vulkan_tet_raycast
 
 #include <cstdint>
@@ -24,13 +25,7 @@ const std::uint32_t kSpirv[] = {
 
 // tet_raycast.comp's push constants.
 struct Params {
-  GridParams grid;  // the dispatch's part and part_shift
-  std::int32_t table_n;
-  float table_lo, table_scale;
-  ShadingParams shading;  // lit 1: sampled, 2: interpolated
-  float max_length;
-  std::int32_t lengths, tets;
-  float extent;
+  VRI_TET_RAYCAST_PUSH_CONSTANTS
 };
 static_assert(sizeof(Params) <= 128, "lavapipe's push constants");
 
@@ -91,9 +86,7 @@ Image VulkanTetRaycast::render(const Camera& camera, const RenderOptions& option
   GridParams grid{};
   grid.part_shift = device_->part_shift();
   Params p{grid,
-           axis.size(),
-           axis.lo(),
-           axis.scale(),
+           {axis.size(), axis.lo(), axis.scale()},
            shading_,
            static_cast<float>(max_length_),
            lengths_,

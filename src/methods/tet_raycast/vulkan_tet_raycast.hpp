@@ -33,7 +33,7 @@ class VulkanTetRaycast final : public GpuSceneRenderer {
   int mode_;
   ScalarAxis axis_;  // the tables' scalar axis  // 0 unlit, 1 sampled, 2 interpolated
   std::array<std::optional<GpuArray>, 2> tables_;  // the table, or the front and back weighted tables
-  ShadingParams shading_;  // lit: the coefficients (lit 0: unlit)
+  ShadingParams shading_{};  // lit: the coefficients (lit 0: unlit)
   std::optional<ComputeKernel> kernel_;
   Bindings inputs() const;
 };
