@@ -78,21 +78,26 @@ std::vector<float> camera_block(const Camera& camera, const RayBox& box, PixelSp
   return block;
 }
 
+void for_each_pixel(const Camera& camera, PixelSpan span, int threads,
+                    const std::function<void(std::size_t, int, int)>& f) {
+  const auto width = static_cast<std::size_t>(camera.width());
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);  // as render() does
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, span.count, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+        const std::size_t p = span.first + i;
+        f(i, static_cast<int>(p % width), static_cast<int>(p / width));
+      }
+    });
+  });
+}
+
 std::vector<float> riemann_block(const Camera& camera, const GridVolume& volume, double h,
                                  std::optional<std::uint64_t> jitter, PixelSpan span, int threads) {
   std::vector<float> block = camera_block(camera, grid_box(volume, h), span, jitter ? 2 : 0);
   if (!jitter) return block;
-  const auto width = static_cast<std::size_t>(camera.width());
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);  // as render() does
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, span.count, 1024),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                          const std::size_t p = span.first + i;
-                          const Ray ray = camera.ray(static_cast<int>(p % width), static_cast<int>(p / width));
-                          put(block.data() + kCameraFloats + 2 * i, detail::jitter_fraction(ray, *jitter));
-                        }
-                      });
+  for_each_pixel(camera, span, threads, [&](std::size_t i, int x, int y) {
+    put(block.data() + kCameraFloats + 2 * i, detail::jitter_fraction(camera.ray(x, y), *jitter));
   });
   return block;
 }

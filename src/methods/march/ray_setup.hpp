@@ -6,7 +6,9 @@
 // pixel (~100 B a pixel, 1.87 GB at 4096^2 when the host set every ray up,
 // issue 47). Riemann's jitter fractions are the one per-pixel input (a hash
 // of the ray in double, jitter_fraction): two floats a pixel, with --jitter only.
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -35,6 +37,11 @@ RayBox mesh_box(const TetMesh& mesh, Vec3 centre);
 // The camera block for the pixels of `span`, `extras` floats a pixel
 // reserved after it (zeros).
 std::vector<float> camera_block(const Camera& camera, const RayBox& box, PixelSpan span, int extras = 0);
+
+// f(i, x, y) for each pixel i of `span` (pixel (x, y) of the image) on
+// `threads` threads (0: every core), as render() runs its pixels.
+void for_each_pixel(const Camera& camera, PixelSpan span, int threads,
+                    const std::function<void(std::size_t, int, int)>& f);
 
 // riemann's block: with a jitter seed, each pixel's fraction (hi, lo) after
 // it; threads as RenderOptions (0: every core).

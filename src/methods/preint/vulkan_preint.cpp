@@ -2,10 +2,6 @@
 #include "preint_push_constants.h"
 #include "preint1.hpp"  // make_vulkan_preint
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <bit>
 #include <cstdint>
 
@@ -123,14 +119,12 @@ Image VulkanPreint::render(const Camera& camera, const RenderOptions& options) c
 void VulkanPreint::add_partial_slabs(const Camera& camera, PixelSpan span, std::span<float> rgba,
                                      std::span<const float> tails, int threads) const {
   const GridVolume& volume = scene_.grid();
-  const auto width = static_cast<std::size_t>(camera.width());
   volume.visit([&](auto values) {
-    const auto pixel = [&](std::size_t i) {
+    for_each_pixel(camera, span, threads, [&](std::size_t i, int x, int y) {
       const std::span<const float> tail = tails.subspan(9 * i, 9);
       const auto full = std::bit_cast<std::int32_t>(tail[0]);
       if (full < 0) return;  // a miss, or T fell below the termination threshold
-      const std::size_t p = span.first + i;
-      const Ray ray = camera.ray(static_cast<int>(p % width), static_cast<int>(p / width));
+      const Ray ray = camera.ray(x, y);
       const auto iv = volume.clip(ray);
       if (!iv) return;  // a graze the kernel's double-float took for a hit
       const Vec3 u0 = sampler_.grid(ray.at(iv->t0)), du = sampler_.grid_step(ray.dir * h_);
@@ -151,13 +145,6 @@ void VulkanPreint::add_partial_slabs(const Camera& camera, PixelSpan span, std::
         add(detail::last_slabs<2>(sampler_, values.data(), tf_, lighting_, ray, *iv, full, h_, front));
       const Rgba out = acc.result();
       for (int c = 0; c < 4; ++c) rgba[4 * i + c] = static_cast<float>(out[c]);
-    };
-    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);  // as render() does
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, span.count, 256),
-                        [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t i = r.begin(); i < r.end(); ++i) pixel(i);
-                        });
     });
   });
 }
