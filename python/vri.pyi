@@ -68,6 +68,9 @@ class Scene:
 def load_scene(path: Union[str, os.PathLike]) -> Scene:
     """Loads a scene file (SPEC §8)."""
 
+def load_volume(path: Union[str, os.PathLike]) -> Union[Volume, Mesh]:
+    """A volume file of any format `vri info` reads: a grid (Volume) or tetrahedra (Mesh)."""
+
 def render(scene: SceneLike, *, method: Optional[str] = None, step: Optional[float] = None,
            tolerance: Optional[float] = None, table_size: Optional[int] = None,
            iterations: Optional[int] = None, width: Optional[int] = None, height: Optional[int] = None,
@@ -76,8 +79,11 @@ def render(scene: SceneLike, *, method: Optional[str] = None, step: Optional[flo
            hmax: Optional[float] = None, strategy: Optional[str] = None, max_samples: Optional[float] = None,
            max_work: Optional[float] = None, jitter: Optional[int] = None, fit: Optional[bool] = None,
            azimuth: Optional[float] = None, elevation: Optional[float] = None, roll: Optional[float] = None,
-           zoom: Optional[float] = None, backend: Optional[str] = None) -> npt.NDArray[np.float32]:
-    """float32 (H, W, 4), premultiplied RGBA: the same bytes as `vri render -o OUT.npy`."""
+           zoom: Optional[float] = None, backend: Optional[str] = None,
+           clip: Optional[dict] = None) -> npt.NDArray[np.float32]:
+    """float32 (H, W, 4), premultiplied RGBA: the same bytes as `vri render -o OUT.npy`.
+    `clip`: {"planes": [[nx, ny, nz, d], ...], "box": [[x0, y0, z0], [x1, y1, z1]]}
+    in world units, replacing the scene's "clip" (SPEC §12; docs/CLIPPING.md)."""
 
 has_vulkan: bool
 """Whether this build has the GPU backend (backend="vulkan")."""

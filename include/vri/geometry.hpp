@@ -97,4 +97,23 @@ struct Footprint {
 // A ray running exactly along a face is inside (SPEC §1).
 std::optional<Interval> clip_to_box(const Ray& ray, Vec3 lo, Vec3 hi);
 
+// ClipRegion (SPEC §12 "clip", issue 50; docs/CLIPPING.md): the part of
+// space a render keeps, in world units - where n . p + d >= 0 for every plane
+// and inside the box. Convex, so a ray keeps one interval of it; each method
+// integrates that interval as it integrates the volume's own box, so its
+// last step, slab or cell piece ends at the cut, not at the next step.
+struct ClipPlane {
+  Vec3 normal;  // any length but 0: the kept side is where it points
+  double d = 0;
+};
+struct ClipRegion {
+  std::vector<ClipPlane> planes;
+  std::optional<Box> box;
+  bool active() const { return !planes.empty() || box.has_value(); }
+  // [t0, t1] cut to the kept part of the ray; false where none of it is
+  // kept (or only a point). A ray parallel to a plane is kept whole on the
+  // kept side, the plane itself included.
+  bool cut(const Ray& ray, double& t0, double& t1) const;
+};
+
 }  // namespace vri

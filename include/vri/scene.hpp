@@ -36,12 +36,34 @@ struct Scene {
   // The volume as one kind; vri::Error naming both kinds if it is the other.
   const GridVolume& grid() const;
   const TetMesh& mesh() const;
+  // The scene's "clip" (SPEC §12), which its volume holds.
+  const ClipRegion& clip() const;
 };
+
+// Sets the region a volume's rays are cut to (GridVolume::set_clip,
+// TetMesh::set_clip): a scene's "clip", or a caller's override.
+void set_clip(Volume& volume, ClipRegion clip);
 
 // A volume file on its own (any format volume_file.hpp tells apart but raw,
 // which needs dims and type: a scene gives them); `scalars` names the array of
 // a VTK file. vri::Error with one line as in a scene.
 Volume load_volume(const std::filesystem::path& file, const std::string& scalars = "");
+
+// A volume standing where a scene does (SPEC §12: `vri render VOLUME`,
+// `vri view VOLUME`; docs/SCENES.md): the transfer function `vri info`
+// suggests - or, with a colour map or an opacity shape, that colour map
+// (default cool_to_warm, ParaView's) under a `ramp` or `sigmoid` extinction
+// up to the suggested function's largest - over `range` ("data",
+// "pLO,pHI" percentiles or "LO,HI"; default the data's); the camera framing
+// its box; the fast method of its kind (preint1, step 1, on grids;
+// tet-raycast on meshes). vri::Error naming the flag for a bad value.
+struct VolumeLook {
+  std::string colormap, opacity, range;  // empty: as `vri info` suggests
+};
+Scene volume_scene(Volume volume, const VolumeLook& look = {});
+// Whether the file holds a scene (JSON: its first non-blank byte is '{')
+// rather than a volume; false, without reading it, unless a regular file.
+bool is_scene_file(const std::filesystem::path& path);
 
 // The box a volume fills: a grid's (SPEC §1), a mesh's points' bounding box.
 std::pair<Vec3, Vec3> bounds(const Volume& volume);
@@ -81,6 +103,8 @@ TransferFunction parse_transfer_function(std::string_view json_text, const std::
                                          const Volume* volume = nullptr, const std::filesystem::path& base_dir = ".");
 // A "camera" block on its own (SPEC §6), checked as in a scene; errors name `source_name`: camera.
 CameraSpec parse_camera(std::string_view json_text, const std::string& source_name = "scene");
+// A "clip" block on its own (SPEC §12), checked as in a scene; errors name `source_name`: clip.
+ClipRegion parse_clip(std::string_view json_text, const std::string& source_name = "scene");
 
 }  // namespace vri
 
@@ -101,6 +125,7 @@ struct SceneOverrides {
   // VTK's motions in degrees and the zoom factor.
   std::optional<bool> fit;
   std::optional<double> azimuth, elevation, roll, zoom;
+  std::optional<ClipRegion> clip;  // replaces the scene's "clip" (an inactive one: none)
 };
 
 // Sets every given field; the camera's size first, then the fit, then the motions. A method other than the scene's drops the scene's

@@ -148,8 +148,12 @@ class GridVolume {
   Vec3 whole_hi() const;
   // The box rays are clipped to (clip): every grid method's footprint.
   Box whole_box() const { return {whole_lo(), whole_hi()}; }
-  // The ray clipped to the whole grid's box with the part this volume owns;
-  // nullopt where it misses the box or owns none of it.
+  // The region rays are cut to besides the box (SPEC §12 "clip"): every
+  // method's rays on every path, since each clips them here.
+  void set_clip(ClipRegion region) { clip_ = std::move(region); }
+  const ClipRegion& clip_region() const { return clip_; }
+  // The ray clipped to the whole grid's box and the clip region, with the
+  // part this volume owns; nullopt where it misses them or owns none of it.
   std::optional<Interval> clip(const Ray& ray) const;
   // min(sx, sy, sz): the unit of step sizes (SPEC §1).
   double voxel_unit() const;
@@ -199,6 +203,7 @@ class GridVolume {
   Vec3 spacing_, origin_;
   float min_ = 0, max_ = 0;
   std::optional<Brick> brick_;
+  ClipRegion clip_;
   struct Cache;  // what is derived from the samples once (grid_volume.cpp)
   std::shared_ptr<Cache> cache_;
 };
@@ -335,6 +340,10 @@ class TetMesh {
   double mean_edge_length() const { return mean_edge_; }
   // Longest edge: no straight segment inside one tetrahedron is longer.
   double max_edge_length() const { return max_edge_; }
+  // The region rays are cut to (SPEC §12 "clip"): TetWalk trims its pieces
+  // to it, so the ray-casting methods cut each tetrahedron's chord there.
+  void set_clip(ClipRegion region) { clip_ = std::move(region); }
+  const ClipRegion& clip_region() const { return clip_; }
 
  private:
   std::vector<Vec3> points_;
@@ -346,6 +355,7 @@ class TetMesh {
   Vec3 lo_, hi_;
   float min_ = 0, max_ = 0;
   double mean_edge_ = 0, max_edge_ = 0;
+  ClipRegion clip_;
 };
 
 }  // namespace vri

@@ -66,7 +66,10 @@ RenderRequest request_of(const char* function, const py::kwargs& kwargs) {
     else if (key == "roll") o.roll = number();
     else if (key == "zoom") o.zoom = number();
     else if (key == "backend") r.backend = parse_backend(*text());
-    else if (key == "max_samples") o.max_samples = number();
+    else if (key == "clip") {  // a dict as the scene's "clip" (SPEC §12)
+      const auto text = py::module_::import("json").attr("dumps")(v).cast<std::string>();
+      o.clip = parse_clip(text, std::string(function) + "()");
+    } else if (key == "max_samples") o.max_samples = number();
     else if (key == "max_work") o.max_work = number();
     else if (key == "jitter") {
       const long long seed = *keyword<long long>(function, key, v);

@@ -47,10 +47,11 @@ std::shared_ptr<Scene> scene_from_dict(const py::dict& d, const std::optional<fs
   return std::make_shared<Scene>(parse_scene(json_of(d), base, "scene"));
 }
 
-py::object volume_of(const Scene& s) {
-  if (const auto* g = std::get_if<GridVolume>(&s.volume)) return py::cast(std::make_shared<GridVolume>(*g));
-  return py::cast(std::make_shared<TetMesh>(std::get<TetMesh>(s.volume)));
+py::object volume_object(const Volume& v) {
+  if (const auto* g = std::get_if<GridVolume>(&v)) return py::cast(std::make_shared<GridVolume>(*g));
+  return py::cast(std::make_shared<TetMesh>(std::get<TetMesh>(v)));
 }
+py::object volume_of(const Scene& s) { return volume_object(s.volume); }
 
 py::list points_of(const TransferFunction& tf) {
   py::list out;
@@ -63,8 +64,14 @@ py::list points_of(const TransferFunction& tf) {
 std::shared_ptr<Scene> scene_of(const py::handle& o) {
   if (py::isinstance<Scene>(o)) return o.cast<std::shared_ptr<Scene>>();
   if (py::isinstance<py::dict>(o)) return scene_from_dict(o.cast<py::dict>(), std::nullopt);
-  if (is_path(o)) return std::make_shared<Scene>(load_scene(o.cast<fs::path>()));
-  throw py::type_error("expected a vri.Scene, a dict of scene keys or a scene file path, got " +
+  if (is_path(o)) {  // a scene file, or a volume file seen as `vri render VOLUME` sees it (SPEC §12)
+    const fs::path path = o.cast<fs::path>();
+    std::error_code error;
+    if (fs::is_regular_file(path, error) && !is_scene_file(path))
+      return std::make_shared<Scene>(volume_scene(load_volume(path)));
+    return std::make_shared<Scene>(load_scene(path));
+  }
+  throw py::type_error("expected a vri.Scene, a dict of scene keys, a scene file path or a volume file path, got " +
                        py::type::of(o).attr("__name__").cast<std::string>());
 }
 
@@ -105,6 +112,10 @@ void bind_scenes(py::module_& m) {
         py::arg("path"),
         "Loads a scene file (SPEC §8); paths inside it are relative to the file. Raises OSError\n"
         "for a file that cannot be read, ValueError for bad content (the CLI's message).");
+  m.def("load_volume", [](const fs::path& path) { return volume_object(load_volume(path)); }, py::arg("path"),
+        "Loads a volume file of any format `vri info` reads: a vri.Volume (a regular grid) or a\n"
+        "vri.Mesh (tetrahedra). vri.render(path) renders it as `vri render VOLUME` does. Raises\n"
+        "OSError for a file that cannot be read, ValueError for bad content.");
 }
 
 }  // namespace vri::python

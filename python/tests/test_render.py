@@ -40,6 +40,37 @@ def test_render_accepts_paths_dicts_and_scenes_alike(root):
         assert other.tobytes() == images[0].tobytes()
 
 
+def test_clip_keyword_is_the_scene_key(root, cli_render):
+    # SPEC §12 "clip" (docs/CLIPPING.md): clip= replaces the scene's; {} removes it.
+    clipped = root / "scenes" / "engine_clipped.json"
+    expected = cli_render(clipped, *CLI_SMALL, "--method", "preint1")
+    image = vri.render(clipped, method="preint1", **SMALL)
+    assert image.tobytes() == expected.tobytes()
+    clip = json.loads(clipped.read_text())["clip"]
+    whole = root / "scenes" / "engine.json"
+    assert vri.render(whole, method="preint1", clip=clip, **SMALL).tobytes() == expected.tobytes()
+    unclipped = vri.render(clipped, method="preint1", clip={}, **SMALL)
+    assert unclipped.tobytes() == vri.render(whole, method="preint1", **SMALL).tobytes()
+    assert unclipped.tobytes() != expected.tobytes()
+    with pytest.raises(ValueError, match=r"render\(\): clip.planes\[0\]: expected a plane \[nx, ny, nz, d\] whose normal is not 0"):
+        vri.render(whole, clip={"planes": [[0, 0, 0, 1]]}, **SMALL)
+    with pytest.raises(ValueError, match=r"render\(\): clip.box2: unknown key \(did you mean .box.\?\)"):
+        vri.render(whole, clip={"box": [[0, 0, 0], [1, 1, 1]], "box2": 1}, **SMALL)
+
+
+def test_a_volume_file_renders_as_the_cli_renders_it(root, cli_render):
+    # SPEC §12: a volume file where a scene stands; vri.load_volume reads any format.
+    engine = root / "data" / "engine.nrrd"
+    expected = cli_render(engine, *CLI_SMALL)
+    assert vri.render(engine, **SMALL).tobytes() == expected.tobytes()
+    assert vri.render(str(engine), **SMALL).tobytes() == expected.tobytes()
+    volume = vri.load_volume(engine)
+    assert isinstance(volume, vri.Volume) and volume.to_numpy().shape == (128, 256, 256)
+    assert isinstance(vri.load_volume(root / "data" / "tetra_mesh_small_ascii.vtk"), vri.Mesh)
+    with pytest.raises(OSError, match="cannot open"):
+        vri.load_volume(root / "data" / "no_such_volume.nrrd")
+
+
 def test_threads_do_not_change_a_byte(root):
     scene = vri.load_scene(root / "scenes" / "engine.json")
     one = vri.render(scene, method="preint1", threads=1, **SMALL)

@@ -21,7 +21,7 @@ Runner add_camera_command(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("camera", "Print a scene's camera (after --fit and the motions) as scene JSON");
-  cmd->add_option("scene", args->scene, "Scene JSON file")->required();
+  cmd->add_option("scene", args->scene, "Scene JSON file, or a volume file (seen as --colormap, --opacity and --range say)")->required();
   args->flags.add_to(cmd);
   return [args] {
     const Scene scene = args->flags.load(args->scene);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "scene/scene_json.hpp"
 #include "vri/error.hpp"
 #include "vri/io.hpp"
 #include "vri/scene.hpp"
@@ -90,14 +91,10 @@ int run_info(const InfoArgs& a) {
     std::cout << "  " << std::setw(12) << s0 << " | " << std::string(std::size_t(bar), '#')
               << std::string(std::size_t(40 - bar), ' ') << " " << coarse[i] << "\n";
   }
+  // Every number as it reads back (`vri render VOLUME` renders with exactly this function).
   const TransferFunction tf = suggest_transfer_function(h, length(hi - lo));
-  std::cout << "suggested transfer function (a scene's \"transfer_function\", or a presets/ file):\n"
-            << "  {\"points\": [";
-  for (std::size_t i = 0; i < tf.points().size(); ++i) {
-    const ControlPoint& p = tf.points()[i];
-    std::cout << (i ? ", " : "") << "[" << p.s << ", " << p.r << ", " << p.g << ", " << p.b << ", " << p.tau << "]";
-  }
-  std::cout << "]}\n";
+  std::cout << "suggested transfer function (a scene's \"transfer_function\", or a presets/ file):\n  "
+            << transfer_function_json(tf).dump() << "\n";
   if (!a.plot.empty()) {
     if (std::filesystem::path(a.plot).extension() != ".png") throw Error("--plot must name a .png file");
     write_file_atomically(a.plot, plot_png(h));

@@ -128,7 +128,7 @@ int run_render(const RenderArgs& args) {
 Runner add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to .npy (float RGBA) or .png");
-  cmd->add_option("scene", args->scene, "Scene JSON file")->required();
+  cmd->add_option("scene", args->scene, "Scene JSON file, or a volume file (seen as --colormap, --opacity and --range say)")->required();
   cmd->add_option("-o,--output", args->output, "Output image (.npy, .png or .exr)")->required();
   args->flags.add_to(cmd);
   cmd->add_option("--png-bits", args->png_bits, "PNG: 8 (default) or 16 bits a channel");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -68,10 +69,25 @@ void SceneFlags::add_to(CLI::App* cmd) {
   cmd->add_option("--hmin", o.hmin, "adaptive: smallest step (voxel units)");
   cmd->add_option("--hmax", o.hmax, "adaptive: largest step (voxel units)");
   cmd->add_option("--strategy", o.strategy, "adaptive: coupled, decoupled or guaranteed");
+  cmd->add_option("--colormap", look.colormap,
+                  "A volume file in place of the scene: this colour map (viridis, magma, inferno, plasma, cividis, "
+                  "grayscale, cool_to_warm, rainbow_uniform) instead of the suggested transfer function");
+  cmd->add_option("--opacity", look.opacity, "A volume file: the opacity over the range, ramp or sigmoid");
+  cmd->add_option("--range", look.range, "A volume file: the transfer function's range, data, pLO,pHI "
+                                         "(percentiles, such as p1,p99) or LO,HI");
 }
 
 Scene SceneFlags::load(const std::string& scene_file, const PartialLoad* part) const {
-  Scene scene = part ? load_scene(scene_file, *part) : load_scene(scene_file);
+  std::error_code error;  // a scene file, or anything the scene loader refuses (a FIFO: issue 47)
+  const bool volume_file = std::filesystem::is_regular_file(scene_file, error) && !is_scene_file(scene_file);
+  const bool looked = !look.colormap.empty() || !look.opacity.empty() || !look.range.empty();
+  if (looked && !volume_file)
+    throw Error("--colormap, --opacity and --range apply to a volume file; a scene sets its \"transfer_function\"");
+  if (volume_file && part)
+    throw Error("a volume file renders in one process; --distributed and mpirun need a scene naming it");
+  Scene scene = volume_file ? volume_scene(load_volume(scene_file), look)
+                : part      ? load_scene(scene_file, *part)
+                            : load_scene(scene_file);
   SceneOverrides o = overrides;
   if (no_skip) o.skip_empty = false;
   if (double_math) o.float_math = false;

@@ -98,7 +98,7 @@ Runner add_turntable_command(CLI::App& app) {
   auto args = std::make_shared<TurntableArgs>();
   CLI::App* cmd = app.add_subcommand(
       "turntable", "Render an orbit about the scene's up vector: PNG frames in a folder, or an .mp4 video");
-  cmd->add_option("scene", args->scene, "Scene JSON file")->required();
+  cmd->add_option("scene", args->scene, "Scene JSON file, or a volume file (seen as --colormap, --opacity and --range say)")->required();
   cmd->add_option("-o,--output", args->output, "A folder (frame_0000.png, ...) or a video (.mp4)")->required();
   cmd->add_option("--frames", args->frames, "Number of frames")->required();
   cmd->add_option("--degrees", args->degrees, "The whole turn (default 360: the last frame leads back to the first)");

@@ -24,6 +24,29 @@ std::optional<Interval> clip_to_box(const Ray& ray, Vec3 lo, Vec3 hi) {
   return Interval{t0, t1};
 }
 
+bool ClipRegion::cut(const Ray& ray, double& t0, double& t1) const {
+  for (const ClipPlane& p : planes) {
+    const double along = dot(p.normal, ray.dir), at_origin = dot(p.normal, ray.origin) + p.d;
+    if (along == 0) {
+      if (!(at_origin >= 0)) return false;  // parallel, on the cut side
+      continue;
+    }
+    const double t = -at_origin / along;  // where the ray crosses the plane
+    if (along > 0) {
+      t0 = std::max(t0, t);
+    } else {
+      t1 = std::min(t1, t);
+    }
+  }
+  if (box) {
+    const auto in = clip_to_box(ray, box->lo, box->hi);
+    if (!in) return false;
+    t0 = std::max(t0, in->t0);
+    t1 = std::min(t1, in->t1);
+  }
+  return t1 > t0;
+}
+
 PieceRange owned_pieces(const Interval& iv, double len, long long count) {
   const auto first_at_or_after = [&](double t) {  // the first piece whose front is at or after t
     return std::clamp(static_cast<long long>(std::ceil((t - iv.t0) / len)), 0LL, count);

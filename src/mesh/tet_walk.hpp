@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "vri/memory.hpp"
@@ -36,9 +37,13 @@ class TetWalk {
   const TetMesh& mesh() const { return mesh_; }
 
   // Calls visit(const TetSegment&) for every tetrahedron piece of the ray with
-  // t >= 0, front to back; stops early when visit returns false.
+  // t >= 0, front to back, trimmed to the mesh's clip region (the scalars at
+  // a cut from the tetrahedron's linear field); stops early when visit
+  // returns false.
   template <class Visit>
   void for_each_segment(const Ray& ray, Visit&& visit) const {
+    double c0 = 0, c1 = std::numeric_limits<double>::infinity();  // the kept part of the ray
+    if (mesh_.clip_region().active() && !mesh_.clip_region().cut(ray, c0, c1)) return;
     double t_exit = 0, t_entry = -1;
     std::int64_t skip = -1;
     // Each boundary entry is strictly further than the previous one, so this
@@ -54,7 +59,13 @@ class TetWalk {
         const auto [tb, face] = exit_of(tet, entry_face, ray);
         const double t_out = std::max(tb, t);
         const double s_out = scalar_at(tet, ray.at(t_out));
-        if (t_out > t && !visit(static_cast<const TetSegment&>(TetSegment{tet, t, t_out, s, s_out}))) return;
+        if (t >= c1) return;
+        if (t_out > t && t_out > c0) {
+          const double a = std::max(t, c0), b = std::min(t_out, c1);
+          const TetSegment seg{tet, a, b, a == t ? s : scalar_at(tet, ray.at(a)),
+                               b == t_out ? s_out : scalar_at(tet, ray.at(b))};
+          if (b > a && !visit(seg)) return;
+        }
         t = t_out;
         const std::int32_t next = mesh_.neighbor(tet, face);
         if (next < 0) {

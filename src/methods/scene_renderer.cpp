@@ -50,6 +50,9 @@ void SceneRenderer::prepare(Backend backend) {
   check_volume_kind(m, std::holds_alternative<TetMesh>(scene.volume));
   check_jitter(m);
   check_termination(m);
+  if (scene.clip().active())
+    throw Error("method '" + m.name + "' projects whole tetrahedra and cannot cut them at a clip plane; use " +
+                method_names([](const MethodInfo& i) { return i.mesh && i.per_ray; }, "or") + " (docs/CLIPPING.md)");
   projected_ = known_method(m.name).make_projected(scene);
 }
 

@@ -1,6 +1,8 @@
 #include "vri/scene.hpp"
 
 #include <algorithm>
+#include <utility>
+#include <variant>
 
 #include "vri/error.hpp"
 
@@ -14,6 +16,14 @@ const GridVolume& Scene::grid() const {
 const TetMesh& Scene::mesh() const {
   if (const auto* m = std::get_if<TetMesh>(&volume)) return *m;
   throw Error("this scene's volume is a regular grid, not a tetrahedral mesh");
+}
+
+const ClipRegion& Scene::clip() const {
+  return std::visit([](const auto& v) -> const ClipRegion& { return v.clip_region(); }, volume);
+}
+
+void set_clip(Volume& volume, ClipRegion clip) {
+  std::visit([&](auto& v) { v.set_clip(std::move(clip)); }, volume);
 }
 
 std::pair<Vec3, Vec3> bounds(const Volume& volume) {

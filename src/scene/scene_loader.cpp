@@ -395,7 +395,42 @@ Lighting lighting_from(const json& lj, const Reader& top) {
   return lighting;
 }
 
+// "clip": {"planes": [[nx, ny, nz, d], ...], "box": [[x0, y0, z0], [x1, y1, z1]]}
+// (SPEC §12): a plane's normal is not 0, a box's corners are ordered.
+ClipRegion clip_from(const json& cj, const Reader& top) {
+  const Reader c = top.child("clip");
+  c.object(cj);
+  c.known(cj, {"planes", "box"});
+  ClipRegion clip;
+  if (cj.contains("planes")) {
+    const json& planes = cj.at("planes");
+    if (!planes.is_array()) c.expected("planes", "an array of planes [nx, ny, nz, d]", planes);
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+      const std::string key = "planes[" + std::to_string(i) + "]";
+      const auto p = c.numbers(planes[i], key, 4);
+      const ClipPlane plane{{p[0], p[1], p[2]}, p[3]};
+      if (!(dot(plane.normal, plane.normal) > 0) || !std::isfinite(dot(plane.normal, plane.normal)))
+        c.expected(key, "a plane [nx, ny, nz, d] whose normal is not 0", planes[i]);
+      clip.planes.push_back(plane);
+    }
+  }
+  if (cj.contains("box")) {
+    const json& b = cj.at("box");
+    const std::string want = "two corners [[x0, y0, z0], [x1, y1, z1]] with x0 <= x1, y0 <= y1, z0 <= z1";
+    if (!b.is_array() || b.size() != 2) c.expected("box", want, b);
+    const auto lo = c.numbers(b[0], "box", 3), hi = c.numbers(b[1], "box", 3);
+    for (int a = 0; a < 3; ++a)
+      if (!(lo[a] <= hi[a])) c.expected("box", want, b);
+    clip.box = Box{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+  }
+  return clip;
+}
+
 }  // namespace
+
+ClipRegion parse_clip(std::string_view text, const std::string& source) {
+  return clip_from(parse_json(text, source), Reader{source, ""});
+}
 
 CameraSpec parse_camera(std::string_view text, const std::string& source) {
   const Reader r{source, ""};
@@ -410,7 +445,7 @@ Scene scene_from(std::string_view text, const fs::path& base, const std::string&
   const json j = parse_json(text, source);
   const Reader r{source, ""};
   r.object(j);
-  r.known(j, {"volume", "transfer_function", "camera", "method", "lighting", "background"});
+  r.known(j, {"volume", "transfer_function", "camera", "method", "lighting", "background", "clip"});
   for (const char* key : {"volume", "transfer_function", "camera"})
     if (!j.contains(key) && !(given && std::string_view(key) == "volume"))
       throw Error(source + ": missing '" + std::string(key) + "'");
@@ -419,6 +454,7 @@ Scene scene_from(std::string_view text, const fs::path& base, const std::string&
   const CameraRequest camera = camera_from(j.at("camera"), r);
   const MethodSpec method = j.contains("method") ? method_from(j.at("method"), r) : MethodSpec{};
   const Lighting lighting = j.contains("lighting") ? lighting_from(j.at("lighting"), r) : Lighting{};
+  const ClipRegion clip = j.contains("clip") ? clip_from(j.at("clip"), r) : ClipRegion{};
 
   Vec3 background{0, 0, 0};
   if (j.contains("background")) {
@@ -451,6 +487,7 @@ Scene scene_from(std::string_view text, const fs::path& base, const std::string&
     std::tie(b.whole_min, b.whole_max) = part->value_range(g->min_value(), g->max_value());
     g->set_brick(b);
   }
+  set_clip(volume, clip);
   const CameraSpec placed = place_camera(camera, &volume, r);
   TransferFunction resolved = tf->resolve(&volume);
   return Scene{std::move(volume), std::move(resolved), placed, lighting, background, method};

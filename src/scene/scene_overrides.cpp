@@ -30,6 +30,7 @@ void apply_method_overrides(MethodSpec& m, const SceneOverrides& o) {
 
 void apply_overrides(Scene& scene, const SceneOverrides& o) {
   apply_method_overrides(scene.method, o);
+  if (o.clip) set_clip(scene.volume, *o.clip);
   if (o.width) scene.camera.width = *o.width;
   if (o.height) scene.camera.height = *o.height;
   if (o.fit.value_or(false)) {

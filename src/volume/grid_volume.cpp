@@ -193,6 +193,7 @@ Vec3 GridVolume::whole_hi() const {
 
 std::optional<Interval> GridVolume::clip(const Ray& ray) const {
   auto iv = clip_to_box(ray, whole_lo(), whole_hi());
+  if (iv && clip_.active() && !clip_.cut(ray, iv->t0, iv->t1)) return std::nullopt;
   if (!iv || !brick_) return iv;
   const Brick& b = *brick_;
   // The owned window from the split planes alone: (plane - o) / d, the same

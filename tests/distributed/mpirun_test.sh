@@ -2,7 +2,7 @@
 # mpirun_test.sh VRI SOURCE_DIR: `mpirun -np N vri render` against one process
 # (SPEC §11: within 1e-6), and its failures (docs/DISTRIBUTED.md).
 # Every bundled grid scene on 4 ranks; exact, riemann, preint1 and preint2 on
-# 2, 3 and 8; exact at a loose tolerance; adaptive against exact within its
+# 2, 3 and 8; the clipped engine with each distributed method on 2 and 3; exact at a loose tolerance; adaptive against exact within its
 # tolerance; a 256^3 volume
 # read by bricks (each rank's memory shows it); then a rank that
 # cannot read its scene, mismatched scenes, a rank that dies, a rank that is
@@ -39,6 +39,10 @@ for np in 2 3 8; do
   for method in exact riemann preint1 preint2; do same "$src/scenes/neghip_lit.json" "$np" --method "$method"; done
 done
 same "$src/scenes/tooth.json" 3 --method preint2-dual
+# A clipped scene (docs/CLIPPING.md): every rank cuts a ray where one process does.
+for np in 2 3; do
+  for method in riemann preint1 preint2 preint2-dual; do same "$src/scenes/engine_clipped.json" "$np" --method "$method"; done
+done
 # exact at the scene's loose tolerance (1e-3), lit: its panels must not
 # depend on the transmittance in front of a brick (2.6e-5 apart when they did).
 same "$src/scenes/marschner_lobb_lit.json" 3 --method exact

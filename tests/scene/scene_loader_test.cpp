@@ -99,6 +99,38 @@ TEST(SceneLoader, RefusesBadScenesWithOneClearLine) {
   expect_refused("{" + vol + ", " + kCamera + R"(, "transfer_function": {"file": "missing_tf.json"}})", "cannot open");
 }
 
+// "clip" (SPEC §12): planes and a box in world units, on the volume.
+TEST(SceneLoader, ReadsAndChecksClip) {
+  const std::string head = R"({"volume": {"builtin": "sphere", "dims": [8, 8, 8]},
+    "transfer_function": {"points": [[0, 1, 1, 1, 0.1]]}, )" + kCamera;
+  const Scene s = parse_scene(head + R"(, "clip": {"planes": [[0, 0, 2, -3], [1, 1, 0, 0.5]],
+    "box": [[-1, 0, 1], [2, 3, 4.5]]}})", ".");
+  const ClipRegion& c = s.clip();
+  ASSERT_EQ(c.planes.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.planes[0].normal.z, 2);
+  EXPECT_DOUBLE_EQ(c.planes[0].d, -3);
+  EXPECT_DOUBLE_EQ(c.planes[1].d, 0.5);
+  ASSERT_TRUE(c.box);
+  EXPECT_DOUBLE_EQ(c.box->lo.x, -1);
+  EXPECT_DOUBLE_EQ(c.box->hi.z, 4.5);
+  EXPECT_EQ(&s.clip(), &s.grid().clip_region());  // the volume holds it
+  EXPECT_FALSE(parse_scene(head + "}", ".").clip().active());
+  EXPECT_FALSE(parse_scene(head + R"(, "clip": {}})", ".").clip().active());
+  EXPECT_TRUE(parse_scene(head + R"(, "clip": {"box": [[0, 0, 0], [0, 1, 1]]}})", ".").clip().active());  // flat
+  expect_refused(head + R"(, "clip": [1, 2]})", "scene: clip: expected a JSON object, found [1,2]");
+  expect_refused(head + R"(, "clip": {"plane": []}})", "scene: clip.plane: unknown key (did you mean 'planes'?)");
+  expect_refused(head + R"(, "clip": {"planes": [0, 0, 1, 0]}})", "scene: clip.planes[0]: expected an array of 4 finite numbers");
+  expect_refused(head + R"(, "clip": {"planes": {"n": 1}}})", "scene: clip.planes: expected an array of planes");
+  expect_refused(head + R"(, "clip": {"planes": [[0, 0, 0, 1]]}})", "scene: clip.planes[0]: expected a plane [nx, ny, nz, d] whose normal is not 0");
+  expect_refused(head + R"(, "clip": {"planes": [[1e300, 1e300, 0, 1]]}})", "whose normal is not 0");
+  expect_refused(head + R"(, "clip": {"planes": [[0, 0, 1, "a"]]}})", "clip.planes[0]: expected an array of 4 finite numbers");
+  expect_refused(head + R"(, "clip": {"box": [[2, 0, 0], [1, 1, 1]]}})",
+                 "scene: clip.box: expected two corners [[x0, y0, z0], [x1, y1, z1]] with x0 <= x1");
+  expect_refused(head + R"(, "clip": {"box": [[0, 0, 0]]}})", "scene: clip.box: expected two corners");
+  expect_refused(head + R"(, "clip": {"box": [[0, 0], [1, 1, 1]]}})", "scene: clip.box: expected an array of 3 finite numbers");
+  EXPECT_DOUBLE_EQ(parse_clip(R"({"planes": [[1, 0, 0, 2]]})").planes[0].d, 2);
+}
+
 TEST(SceneLoader, ReadsAndChecksIterations) {
   const std::string head = R"({"volume": {"builtin": "sphere", "dims": [8, 8, 8]},
     "transfer_function": {"points": [[0, 1, 1, 1, 0.1]]}, )" + kCamera;

@@ -224,6 +224,85 @@ CameraMade make_camera(Random& r, const GridVolume& v) {
   return c;
 }
 
+struct ClipMade {
+  ClipRegion region;
+  std::string family;
+};
+
+// SPEC §12 "clip" (issue 50), drawn after the rest so that a seed keeps its
+// volume, transfer function, camera and light: oblique planes through the
+// volume, a plane on a grid plane (a cell face), a plane the view runs
+// along (grazing), a crop box (corners on grid points or past the volume),
+// or a box beside the volume (nothing kept).
+ClipMade make_clip(Random& r, const GridVolume& v, const CameraSpec& camera) {
+  const Vec3 lo = v.box_lo(), hi = v.box_hi();
+  auto inside = [&] { return Vec3{r.uniform(lo.x, hi.x), r.uniform(lo.y, hi.y), r.uniform(lo.z, hi.z)}; };
+  auto unit = [&] {
+    for (;;) {
+      const Vec3 d{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
+      if (const double l = length(d); l > 0.1 && l <= 1) return (1 / l) * d;
+    }
+  };
+  auto through = [](Vec3 n, Vec3 p) { return ClipPlane{n, -dot(n, p)}; };
+  auto grid_point = [&](int a) { return v.origin()[a] + r.integer(0, v.dims()[a] - 1) * v.spacing()[a]; };
+  ClipMade c;
+  if (!r.chance(0.35)) return {{}, "clip:none"};
+  switch (r.integer(0, 4)) {
+    case 0:
+      for (int k = r.integer(1, 3); k > 0; --k) c.region.planes.push_back(through(unit(), inside()));
+      c.family = "clip:planes";
+      break;
+    case 1: {
+      const int a = r.integer(0, 2);
+      Vec3 n{0, 0, 0};
+      n[a] = r.chance(0.5) ? 1 : -1;
+      Vec3 p = inside();
+      p[a] = grid_point(a);
+      c.region.planes.push_back(through(n, p));
+      c.family = "clip:cell-face";
+      break;
+    }
+    case 2: {  // the plane holds the view's direction: rays near the middle graze it
+      const Vec3 view = camera.target - camera.eye;
+      Vec3 n = cross(view, unit());
+      if (!(length(n) > 0)) n = Vec3{0, 0, 1};
+      c.region.planes.push_back(through((1 / length(n)) * n, camera.target));
+      c.family = "clip:grazing";
+      break;
+    }
+    case 3: {
+      Box box{inside(), inside()};
+      for (int a = 0; a < 3; ++a) {
+        if (box.lo[a] > box.hi[a]) std::swap(box.lo[a], box.hi[a]);
+        if (r.chance(0.3)) box.lo[a] = grid_point(a);
+        if (r.chance(0.2)) box.hi[a] = hi[a] + r.uniform(0, 1) * (hi[a] - lo[a]);
+        if (box.lo[a] > box.hi[a]) std::swap(box.lo[a], box.hi[a]);
+      }
+      c.region.box = box;
+      c.family = "clip:box";
+      break;
+    }
+    default: {
+      const Vec3 size = hi - lo;
+      c.region.box = Box{hi + 0.1 * size, hi + 0.5 * size};
+      c.family = "clip:nothing-kept";
+      break;
+    }
+  }
+  return c;
+}
+
+json clip_json(const ClipRegion& clip) {
+  json out = json::object();
+  if (!clip.planes.empty()) {
+    out["planes"] = json::array();
+    for (const ClipPlane& p : clip.planes) out["planes"].push_back({p.normal.x, p.normal.y, p.normal.z, p.d});
+  }
+  if (clip.box)
+    out["box"] = {{clip.box->lo.x, clip.box->lo.y, clip.box->lo.z}, {clip.box->hi.x, clip.box->hi.y, clip.box->hi.z}};
+  return out;
+}
+
 json points_json(const std::vector<ControlPoint>& points) {
   json out = json::array();
   for (const auto& p : points) out.push_back({p.s, p.r, p.g, p.b, p.tau});
@@ -249,8 +328,11 @@ Case make_case(std::uint64_t seed) {
     light.shininess = r.log_uniform(1, 1e3);
     light.mode = r.chance(0.5) ? "sampled" : "interpolated";
   }
+  const ClipMade clip = make_clip(r, volume.volume, camera.spec);
+  volume.volume.set_clip(clip.region);
   Case c{seed,
-         {volume.family, tf.family, extinction_family(scale), camera.family, light.enabled ? "light:on" : "light:off"},
+         {volume.family, tf.family, extinction_family(scale), camera.family, light.enabled ? "light:on" : "light:off",
+          clip.family},
          Scene{volume.volume, TransferFunction(tf.points), camera.spec, light, {0, 0, 0}, {}},
          ""};
   const CameraSpec& cs = camera.spec;
@@ -271,6 +353,7 @@ Case make_case(std::uint64_t seed) {
   if (light.enabled)
     j["lighting"] = {{"enabled", true},          {"ambient", light.ambient}, {"diffuse", light.diffuse},
                      {"specular", light.specular}, {"shininess", light.shininess}, {"mode", light.mode}};
+  if (clip.region.active()) j["clip"] = clip_json(clip.region);
   c.json = j.dump();
   return c;
 }

@@ -129,6 +129,34 @@ Rgba integrate(const GridVolume& v, const Tf& tf, Ray ray) {
     t0 = std::max(t0, ta);
     t1 = std::min(t1, tb);
   }
+  // SPEC §12 "clip", on its own terms: kept where n . p + d >= 0 for each
+  // plane (the crossing t = -(n . o + d) / (n . dir)) and inside the box.
+  const ClipRegion& clip = v.clip_region();
+  for (const ClipPlane& p : clip.planes) {
+    const double along = p.normal.x * ray.dir.x + p.normal.y * ray.dir.y + p.normal.z * ray.dir.z;
+    const double height = p.normal.x * ray.origin.x + p.normal.y * ray.origin.y + p.normal.z * ray.origin.z + p.d;
+    if (along == 0) {
+      if (height < 0) return {0, 0, 0, 0};
+      continue;
+    }
+    const double t = -height / along;
+    if (along > 0) {
+      t0 = std::max(t0, t);
+    } else {
+      t1 = std::min(t1, t);
+    }
+  }
+  if (clip.box)
+    for (int a = 0; a < 3; ++a) {
+      if (ray.dir[a] == 0) {
+        if (ray.origin[a] < clip.box->lo[a] || ray.origin[a] > clip.box->hi[a]) return {0, 0, 0, 0};
+        continue;
+      }
+      double ta = (clip.box->lo[a] - ray.origin[a]) / ray.dir[a], tb = (clip.box->hi[a] - ray.origin[a]) / ray.dir[a];
+      if (ta > tb) std::swap(ta, tb);
+      t0 = std::max(t0, ta);
+      t1 = std::min(t1, tb);
+    }
   if (!(t1 > t0)) return {0, 0, 0, 0};
   const double unit = std::min({v.spacing().x, v.spacing().y, v.spacing().z});
   const int n = std::clamp(int(std::ceil((t1 - t0) / (kReferenceStep * unit))), 1, 200000);

@@ -1,6 +1,6 @@
 // The GPU makes each pixel's ray from the camera (vulkan/shaders/camera_rays.glsl,
 // src/methods/march/ray_setup.hpp; issue 47, item 16): a frame uploads the
-// camera block - 256 bytes a chunk of pixels, plus riemann's jitter
+// camera block - 512 bytes a chunk of pixels, plus riemann's jitter
 // fractions - not ~100 bytes a pixel; and the rays it makes in double-float
 // sample where the CPU's double rays do, far from the world's origin (the
 // block's frame), from inside the volume, orthographic, through a mesh.
@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "camera_block.h"  // VRI_CAMERA_FLOATS
 #include "gpu_against_cpu.hpp"
 #include "gpu_buffer.hpp"
 #include "mesh/mesh_test_support.hpp"
@@ -52,6 +53,10 @@ std::uint64_t frame_upload(const Scene& scene) {
   return vulkan::GpuBuffer::uploaded_bytes() - before;
 }
 
+// The camera block's bytes (camera_block.h): 128 floats, the clip planes' room included.
+constexpr std::uint64_t kBlockBytes = 4 * VRI_CAMERA_FLOATS;
+static_assert(kBlockBytes == 512);
+
 TEST(CameraRays, AFrameUploadsTheCameraBlockNotItsRays) {
   Scene scene = far_scene("[0, 0, 0]", "riemann");
   scene.camera.width = 520;
@@ -60,11 +65,11 @@ TEST(CameraRays, AFrameUploadsTheCameraBlockNotItsRays) {
   scene.method.tolerance = 1e-3;  // adaptive's
   for (const char* method : {"riemann", "preint1", "preint2", "preint2-dual", "adaptive"}) {
     scene.method.name = method;
-    EXPECT_EQ(frame_upload(scene), 2u * 256u) << method;
+    EXPECT_EQ(frame_upload(scene), 2u * kBlockBytes) << method;
   }
   scene.method.name = "riemann";
   scene.method.jitter = 7;  // a fraction (hi, lo) a pixel: a hash of the CPU's double ray
-  EXPECT_EQ(frame_upload(scene), 2u * 256u + 8u * 265200u);
+  EXPECT_EQ(frame_upload(scene), 2u * kBlockBytes + 8u * 265200u);
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }
 
@@ -130,7 +135,7 @@ TEST(CameraRays, AMeshFarFromTheOrigin) {
   scene.camera.eye = offset + Vec3{13, -8, 10};
   scene.camera.target = offset + Vec3{2.5, 2.5, 2.5};
   EXPECT_LE(gpu_against_cpu(scene).max, 1e-4);
-  EXPECT_EQ(frame_upload(scene), 256u);
+  EXPECT_EQ(frame_upload(scene), kBlockBytes);
   EXPECT_EQ(vulkan::VulkanDevice::validation_messages(), 0u);
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/json_support.hpp"
 #include "scene/scene_json.hpp"
+#include "scene/volume_scene.hpp"
 #include "vri/camera.hpp"
 #include "vri/error.hpp"
 #include "vri/volume.hpp"
@@ -71,23 +72,6 @@ json describe(const Dataset& d, const Histogram& h) {
   return {{"volume", v}, {"histogram", {{"range", {h.lo, h.hi}}, {"counts", h.counts}}}};
 }
 
-// What the viewer renders with when nothing says otherwise: interactive and accurate.
-json default_method(const Volume& volume) {
-  return std::holds_alternative<GridVolume>(volume) ? json{{"name", "preint1"}, {"step", 1}}
-                                                    : json{{"name", "tet-raycast"}};
-}
-
-// The scene of a bare volume file: the transfer function its histogram
-// suggests (`vri info` prints the same), the framing camera, the method users
-// of the volume's kind want first.
-std::string default_scene_text(const Volume& volume, const Histogram& h) {
-  const auto [lo, hi] = bounds(volume);
-  const json scene = {{"transfer_function", transfer_function_json(suggest_transfer_function(h, length(hi - lo)))},
-                      {"camera", camera_json(frame_box(lo, hi))},
-                      {"method", default_method(volume)}};
-  return scene.dump();
-}
-
 }  // namespace
 
 std::shared_ptr<const Dataset> load_dataset(const fs::path& file, const std::string& id) {
@@ -117,12 +101,12 @@ std::shared_ptr<const Dataset> load_dataset(const fs::path& file, const std::str
     // takes seconds a frame: the viewer opens such a scene with the fast method
     // of its kind, and renders exact in the background as the error map's
     // reference and the refinement.
-    if (loaded.method.name == "exact") scene["method"] = default_method(*volume);
+    if (loaded.method.name == "exact") scene["method"] = default_method_json(*volume);
   } else {
     volume_json = {{"file", fs::absolute(file).lexically_normal().string()}};
     volume.emplace(load_volume(file));
     h = histogram_of(*volume);
-    scene = json::parse(default_scene_text(*volume, *h));
+    scene = volume_scene_json(*volume);  // as `vri render VOLUME` sees it
     scene["lighting"] = lighting_json(Lighting{});
     scene["background"] = {0, 0, 0};
   }

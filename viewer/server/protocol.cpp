@@ -50,7 +50,7 @@ RenderRequest render_request(const json& j) {
   else if (quality == "final") r.quality = Quality::Final;
   else throw Error("render: 'quality' must be preview or final, not '" + quality + "'");
   r.scene = member(j, "scene", json::value_t::object, "render");
-  only_keys(r.scene, {"transfer_function", "camera", "lighting", "background", "method"}, "render.scene");
+  only_keys(r.scene, {"transfer_function", "camera", "lighting", "background", "method", "clip"}, "render.scene");
   refuse_files(r.scene, "render.scene");
   const json& camera = member(r.scene, "camera", json::value_t::object, "render.scene");
   for (const char* side : {"width", "height"})

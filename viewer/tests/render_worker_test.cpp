@@ -153,6 +153,33 @@ TEST_F(WorkerFixture, BadSceneGetsAnErrorAndTheWorkerGoesOn) {
   EXPECT_EQ(inbox.next().header["stage"], "final");
 }
 
+// A clipped scene (SPEC §12 "clip", docs/CLIPPING.md): the final frame is
+// `vri render`'s bytes for it, not the unclipped one's; a bad clip gets an
+// error reply naming the key.
+TEST_F(WorkerFixture, ClippedFramesAreTheBytesOfVriRender) {
+  RenderRequest r = request(welcome["scene"], 1, Quality::Final);
+  r.scene["clip"] = {{"planes", {{1, 0.2, 0, -30}}}, {"box", {{0, 5, 0}, {60, 50, 40}}}};
+  worker.submit(r);
+  const Frame f = inbox.next();
+  ASSERT_EQ(f.header["stage"], "final");
+  json file = r.scene;
+  file["volume"] = welcome["volume"]["json"];
+  const Scene scene = parse_scene(file.dump(), "/", "saved");
+  ASSERT_TRUE(scene.clip().active());
+  EXPECT_EQ(f.image, encode_png(SceneRenderer(scene).render({.threads = 1}), scene.background));
+  file.erase("clip");
+  const Scene whole = parse_scene(file.dump(), "/", "saved");
+  EXPECT_NE(f.image, encode_png(SceneRenderer(whole).render({.threads = 1}), whole.background));
+  RenderRequest bad = request(welcome["scene"], 2, Quality::Final);
+  bad.scene["clip"] = {{"planes", {{0, 0, 0, 1}}}};
+  worker.submit(bad);
+  const Frame e = inbox.next();
+  EXPECT_EQ(e.header["type"], "error");
+  EXPECT_NE(e.header["message"].get<std::string>().find("clip.planes[0]: expected a plane [nx, ny, nz, d] whose normal is not 0"),
+            std::string::npos)
+      << e.header["message"];
+}
+
 // `vri view --backend vulkan`: the worker's final frame is the GPU renderer's
 // image (on lavapipe, the CPU's bytes too), the error map's reference is the
 // CPU's exact; a method not on the GPU gets an error reply and the worker

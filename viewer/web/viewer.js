@@ -249,6 +249,8 @@ function onWelcome(w) {
   const bg = scene.background ?? [0, 0, 0];
   $('background').value = toHex(bg[0], bg[1], bg[2]);
 
+  clipControls(scene.clip, w.volume?.bounds);
+
   let [lo, hi] = w.volume?.range ?? w.histogram?.range ?? [0, 1];
   if (!(hi > lo)) hi = lo + 1;  // a constant volume still needs an axis
   $('range-lo').value = lo;
@@ -378,6 +380,64 @@ onChange('error-tolerance', (el) => {
   if (v > 0) errorTolerance = v;
   if ($('error-map').checked) drawColorbar($('colorbar'), errorTolerance);
 });
+
+// ---- clip (SPEC §12 "clip", docs/CLIPPING.md) ------------------------------------------
+// One plane across an axis and a crop box, each slider a thousandth of the
+// volume's box; dragging previews, letting go renders the final frame.
+
+let bounds = [[0, 0, 0], [1, 1, 1]];
+const CROP = [0, 1, 2].map((a) => [`crop-lo-${a}`, `crop-hi-${a}`]);
+const at = (a, v) => bounds[0][a] + (bounds[1][a] - bounds[0][a]) * Number(v) / 1000;
+const slider = (a, x) => String(Math.round(1000 * (x - bounds[0][a]) / ((bounds[1][a] - bounds[0][a]) || 1)));
+
+// The controls from a scene's clip: a plane across an axis and a box they
+// show; anything else (oblique or several planes) is kept and noted.
+function clipControls(clip, box) {
+  if (Array.isArray(box) && box.length === 2) bounds = box;
+  const planes = clip?.planes ?? [];
+  const axis = planes.length === 1 ? planes[0].slice(0, 3).findIndex((x) => x !== 0) : -1;
+  const simple = planes.length === 0 ||
+    (planes.length === 1 && planes[0].slice(0, 3).filter((x) => x !== 0).length === 1);
+  $('clip-custom').hidden = simple;
+  $('clip-axis').value = axis >= 0 && simple ? String(axis) : '';
+  $('clip-flip').checked = axis >= 0 && planes[0][axis] < 0;
+  $('clip-at').value = axis >= 0 ? slider(axis, -planes[0][3] / planes[0][axis]) : '500';
+  $('crop').checked = !!clip?.box;
+  $('crop-sliders').hidden = !clip?.box;
+  CROP.forEach(([lo, hi], a) => {
+    $(lo).value = clip?.box ? slider(a, clip.box[0][a]) : '0';
+    $(hi).value = clip?.box ? slider(a, clip.box[1][a]) : '1000';
+  });
+}
+
+// The scene's clip from the controls (none: the key left out).
+function clipFromControls() {
+  const clip = {};
+  const axis = $('clip-axis').value;
+  if (axis !== '') {
+    const a = Number(axis), sign = $('clip-flip').checked ? -1 : 1, n = [0, 0, 0];
+    n[a] = sign;
+    clip.planes = [[...n, -sign * at(a, $('clip-at').value)]];
+  }
+  if ($('crop').checked) {
+    const lo = CROP.map(([l, h], a) => at(a, Math.min(Number($(l).value), Number($(h).value))));
+    const hi = CROP.map(([l, h], a) => at(a, Math.max(Number($(l).value), Number($(h).value))));
+    clip.box = [lo, hi];
+  }
+  if (Object.keys(clip).length) scene.clip = clip; else delete scene.clip;
+  $('clip-custom').hidden = true;
+}
+
+for (const id of ['clip-axis', 'clip-flip', 'crop', 'clip-at', ...CROP.flat()]) {
+  const el = $(id);
+  el.addEventListener('input', () => {
+    if (!scene) return;
+    $('crop-sliders').hidden = !$('crop').checked;
+    clipFromControls();
+    if (el.type === 'range') wantPreview();  // a drag: previews until let go
+  });
+  el.addEventListener('change', () => { if (scene) { clipFromControls(); sendFinal(); } });
+}
 
 $('preset').addEventListener('change', () => {
   const p = welcome?.presets?.[Number($('preset').value)];

@@ -3,7 +3,7 @@
 // (camera_rays.glsl); C++ and GLSL include this file. Double-float slots
 // hold a value's hi at float 2 slot and its lo at 2 slot + 1; words are
 // unsigned ints as float bits. Vectors take three slots, x y z.
-#define VRI_CAMERA_FLOATS 64     /* the block; a pixel's extras follow it */
+#define VRI_CAMERA_FLOATS 128    /* the block; a pixel's extras follow it */
 #define VRI_CAM_EYE 0            /* the eye, in the frame */
 #define VRI_CAM_U 3              /* Camera::frame(): u, v, w */
 #define VRI_CAM_V 6
@@ -20,4 +20,7 @@
 #define VRI_CAM_HEIGHT 57
 #define VRI_CAM_FIRST 58         /* the chunk's first pixel, */
 #define VRI_CAM_ORTHO 59         /* 1: orthographic, */
-#define VRI_CAM_EXTRAS 60        /* floats a pixel after the block */
+#define VRI_CAM_EXTRAS 60        /* floats a pixel after the block, */
+#define VRI_CAM_PLANES 61        /* the clip planes that follow (0xffffffff: the clip keeps nothing) */
+#define VRI_CAM_PLANE0 32        /* clip planes (n, d) of unit n, in the frame: 4 slots each, */
+#define VRI_CAM_MAX_PLANES 8     /* up to 8 (slots 32 .. 63) */

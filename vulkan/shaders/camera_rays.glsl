@@ -17,7 +17,7 @@ const uint kCamAspect = VRI_CAM_ASPECT, kCamHalfH = VRI_CAM_HALF_H, kCamBoxLo = 
 const uint kCamBoxHi = VRI_CAM_BOX_HI, kCamOrigin = VRI_CAM_ORIGIN, kCamInverse = VRI_CAM_INVERSE;
 const uint kCamStep = VRI_CAM_STEP, kCamScale = VRI_CAM_SCALE, kCamWidth = VRI_CAM_WIDTH;
 const uint kCamHeight = VRI_CAM_HEIGHT, kCamFirst = VRI_CAM_FIRST, kCamOrtho = VRI_CAM_ORTHO;
-const uint kCamExtras = VRI_CAM_EXTRAS;
+const uint kCamExtras = VRI_CAM_EXTRAS, kCamPlanes = VRI_CAM_PLANES, kCamPlane0 = VRI_CAM_PLANE0;
 
 DF cam_df(uint slot) { return DF(rays.r[2u * slot], rays.r[2u * slot + 1u]); }
 uint cam_uint(uint at) { return floatBitsToUint(rays.r[at]); }
@@ -32,7 +32,7 @@ struct PixelRay {
 };
 
 // The ray of the dispatch's pixel `index` (Camera::ray), clipped to the
-// block's box (clip_to_box).
+// block's box (clip_to_box) and its clip planes (ClipRegion::cut).
 PixelRay pixel_ray(uint index) {
   PixelRay r;
   const uint width = cam_uint(kCamWidth), pixel = cam_uint(kCamFirst) + index;
@@ -76,6 +76,29 @@ PixelRay pixel_ray(uint index) {
     if (df_less(r.t0, ta)) r.t0 = ta;
     r.t1 = bounded ? df_min(r.t1, tb) : tb;
     bounded = true;
+  }
+  // The clip planes (SPEC §12 "clip"; its box is in the block's): the ray
+  // kept where n . p + d >= 0, cut where it crosses a plane.
+  const uint planes = cam_uint(kCamPlanes);
+  if (planes == 0xffffffffu) r.hits = false;
+  for (uint i = 0u; i < min(planes, uint(VRI_CAM_MAX_PLANES)); ++i) {
+    const uint at = kCamPlane0 + 4u * i;
+    DF along = DF(0.0, 0.0), height = DF(0.0, 0.0);
+    for (uint a = 0u; a < 3u; ++a) {
+      along = df_add(along, df_mul(cam_df(at + a), r.d[a]));
+      height = df_add(height, df_mul(cam_df(at + a), r.o[a]));
+    }
+    height = df_add(height, cam_df(at + 3u));
+    if (along.hi == 0.0) {  // parallel: kept whole or cut whole
+      if (height.hi < 0.0) r.hits = false;
+      continue;
+    }
+    const DF t = df_neg(df_div(height, along));
+    if (along.hi > 0.0) {
+      if (df_less(r.t0, t)) r.t0 = t;
+    } else {
+      r.t1 = df_min(r.t1, t);
+    }
   }
   // A camera absurdly far from the box (over ~1e34 of its sizes) overflows: a miss.
   r.hits = r.hits && bounded && df_less(r.t0, r.t1) && !isinf(r.t1.hi);

@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <string>
+
+#include "vri/error.hpp"
 
 #include "methods/riemann/float_riemann.hpp"  // jitter_fraction
 
@@ -18,10 +21,11 @@ namespace {
 enum Slot {
   kEye = VRI_CAM_EYE, kU = VRI_CAM_U, kV = VRI_CAM_V, kW = VRI_CAM_W, kAspect = VRI_CAM_ASPECT,
   kHalfH = VRI_CAM_HALF_H, kBoxLo = VRI_CAM_BOX_LO, kBoxHi = VRI_CAM_BOX_HI, kOrigin = VRI_CAM_ORIGIN,
-  kInverse = VRI_CAM_INVERSE, kStep = VRI_CAM_STEP, kScale = VRI_CAM_SCALE
+  kInverse = VRI_CAM_INVERSE, kStep = VRI_CAM_STEP, kScale = VRI_CAM_SCALE, kPlane0 = VRI_CAM_PLANE0
 };
 enum Word { kWidth = VRI_CAM_WIDTH, kHeight = VRI_CAM_HEIGHT, kFirst = VRI_CAM_FIRST, kOrtho = VRI_CAM_ORTHO,
-            kExtras = VRI_CAM_EXTRAS };
+            kExtras = VRI_CAM_EXTRAS, kPlanes = VRI_CAM_PLANES };
+constexpr std::size_t kMaxClipPlanes = VRI_CAM_MAX_PLANES;
 
 // x as the double-float hi + lo at out[0], out[1].
 void put(float* out, double x) {
@@ -39,12 +43,24 @@ void put_word(std::vector<float>& block, int at, std::uint32_t w) { block[at] = 
 
 RayBox grid_box(const GridVolume& volume, double step) {
   const Vec3 s = volume.spacing();
-  return {volume.box_lo(), volume.box_hi(), volume.origin(), {1 / s.x, 1 / s.y, 1 / s.z}, step};
+  RayBox box{volume.box_lo(), volume.box_hi(), volume.origin(), {1 / s.x, 1 / s.y, 1 / s.z}, step, {}, false};
+  const ClipRegion& clip = volume.clip_region();
+  box.planes = clip.planes;
+  // The boxes' intersection: clip_to_box on it is the max and min of the
+  // two boxes' crossings (GridVolume::clip), the same values.
+  if (clip.box)
+    for (int a = 0; a < 3; ++a) {
+      box.lo[a] = std::max(box.lo[a], clip.box->lo[a]);
+      box.hi[a] = std::min(box.hi[a], clip.box->hi[a]);
+      box.none = box.none || box.lo[a] > box.hi[a];
+    }
+  if (box.none) box.lo = box.hi = volume.box_lo();  // a frame of the volume's, nothing kept
+  return box;
 }
 
 RayBox mesh_box(const TetMesh& mesh, Vec3 centre) {
   const Vec3 pad = (mesh.box_hi() - mesh.box_lo()) * 1e-3;
-  return {mesh.box_lo() - pad, mesh.box_hi() + pad, centre, {1, 1, 1}, 0};
+  return {mesh.box_lo() - pad, mesh.box_hi() + pad, centre, {1, 1, 1}, 0, {}, false};
 }
 
 std::vector<float> camera_block(const Camera& camera, const RayBox& box, PixelSpan span, int extras) {
@@ -75,6 +91,19 @@ std::vector<float> camera_block(const Camera& camera, const RayBox& box, PixelSp
   put_word(block, kFirst, static_cast<std::uint32_t>(span.first));
   put_word(block, kOrtho, ortho ? 1 : 0);
   put_word(block, kExtras, static_cast<std::uint32_t>(extras));
+  // The clip planes in the frame: n . p + d >= 0 with p = q / scale + centre
+  // for q in the frame is n . q + scale (n . centre + d) >= 0, n made unit.
+  if (box.planes.size() > kMaxClipPlanes)
+    throw Error("--backend vulkan: at most " + std::to_string(kMaxClipPlanes) + " clip planes on the GPU, not " +
+                std::to_string(box.planes.size()));
+  put_word(block, kPlanes, box.none ? 0xffffffffu : static_cast<std::uint32_t>(box.planes.size()));
+  for (std::size_t i = 0; i < box.planes.size(); ++i) {
+    const ClipPlane& p = box.planes[i];
+    const double n = length(p.normal);
+    const int at = kPlane0 + 4 * static_cast<int>(i);
+    put(block, at, p.normal * (1 / n));
+    put(block, at + 3, scale * (dot(p.normal, centre) + p.d) / n);
+  }
   return block;
 }
 

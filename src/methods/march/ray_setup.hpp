@@ -28,8 +28,13 @@ struct RayBox {
   Vec3 origin;   // the grid's origin (a mesh: the centre its positions are taken from)
   Vec3 inverse;  // grid units per world unit (a mesh: unused)
   double step = 0;  // the march's step, world units (0: none)
+  // The volume's clip (SPEC §12): its box is in lo, hi; its planes here;
+  // `none` where its box misses the volume's.
+  std::vector<ClipPlane> planes;
+  bool none = false;
 };
 
+// The grid's box cut by its clip region's box, with the region's planes.
 RayBox grid_box(const GridVolume& volume, double step);
 // The mesh's box widened by 1e-3 of its diagonal on each side, as the CPU's mesh walk.
 RayBox mesh_box(const TetMesh& mesh, Vec3 centre);

@@ -4,7 +4,7 @@
 //
 // Starts the server on a free port, opens the page, and checks: the token is
 // required, TF and camera drags give previews then a new final, the error map,
-// an error reply to a bad message, "save scene" + `vri render` = "save image"
+// an error reply to a bad message, a clip plane dragged, "save scene" + `vri render` = "save image"
 // byte for byte, and a clean exit on SIGINT. One line per check passed; on a
 // failure one line "FAIL: ..." and exit 1. Everything is killed after 120 s.
 import { spawn, execFile } from 'node:child_process';
@@ -256,6 +256,28 @@ let previous = first;
   const after = await waitForFinal(page, '(e) after the error reply', s0);
   pass(`(e) malformed message: error reply shown, then final ${after.seq} still rendered`);
   previous = after;
+}
+
+// (e2) clip: a plane across x, then its slider dragged: previews, then a final
+// with new bytes; (f) then renders the clipped scene with `vri render`
+{
+  const s0 = await lastSentSeq(page);
+  await page.select('#clip-axis', '0');
+  const cut = await waitForFinal(page, '(e2) after choosing a clip plane', s0);
+  if (cut.hash === previous.hash) fail('(e2) the final frame with a clip plane has the same bytes as without');
+  const r = await viewer(page, () => {
+    const b = document.getElementById('clip-at').getBoundingClientRect();
+    return { x: b.left + b.width / 2, y: b.top + b.height / 2 };
+  });
+  const s1 = await lastSentSeq(page);
+  await drag(page, r, -50, 0, 6, 40, () => waitFor(page, (s) => window.vriViewer.frames.some((f) => f.stage === 'preview' && f.seq > s),
+    [s1], 15_000, '(e2) no preview frame arrived while dragging the clip plane'));
+  const moved = await waitForFinal(page, '(e2) after dragging the clip plane', s1);
+  const clip = await viewer(page, () => window.vriViewer.state().clip);
+  if (!(clip?.planes?.length === 1 && clip.planes[0][0] === 1)) fail(`(e2) the scene's clip is ${JSON.stringify(clip)}`);
+  if (moved.hash === cut.hash) fail('(e2) moving the clip plane left the final frame as it was');
+  pass(`(e2) clip plane x >= ${(-clip.planes[0][3]).toFixed(2)}: previews while dragged, final ${moved.seq} with new bytes`);
+  previous = moved;
 }
 
 // (f) save scene + save image; `vri render` of the scene gives the image's bytes
