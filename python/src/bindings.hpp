@@ -1,5 +1,5 @@
 #pragma once
-// The Python module `vri` (pybind11): one bind_* per part of the library,
+// The extension `vri._vri` (pybind11): one bind_* per part of the library,
 // each in its own file; module.cpp puts them together.
 #include <memory>
 
@@ -18,6 +18,7 @@ void bind_volumes(py::module_& m);    // Volume, Mesh (from numpy)
 void bind_scenes(py::module_& m);     // Scene, load_scene
 void bind_rendering(py::module_& m);  // render, error_estimate, trace
 void bind_analysis(py::module_& m);   // table, compare, ray, memory budget
+void bind_images(py::module_& m);     // vri.Image's files and PNG bytes, a volume's scene
 
 // A scene from what Python passes: a Scene, a dict of SPEC §8 keys (its
 // "volume" may be a Volume or a Mesh) or the path of a scene file.

@@ -1,4 +1,5 @@
-// The Python module `vri`: volume rendering with measurable accuracy, on numpy.
+// The extension `vri._vri` of the Python package `vri` (python/vri/__init__.py
+// re-exports it and adds vri.Image and the array front door of vri.render).
 #include <pybind11/pybind11.h>
 
 #include <string>
@@ -25,7 +26,7 @@ void bind_errors(py::module_&) {
 
 }  // namespace vri::python
 
-PYBIND11_MODULE(vri, m) {
+PYBIND11_MODULE(_vri, m) {
   static const std::string doc =
       "vri: volume rendering with measurable accuracy.\n\n"
       "Render regular-grid volumes and tetrahedral meshes with the integration methods of\n"
@@ -41,4 +42,5 @@ PYBIND11_MODULE(vri, m) {
   vri::python::bind_scenes(m);
   vri::python::bind_rendering(m);
   vri::python::bind_analysis(m);
+  vri::python::bind_images(m);
 }

@@ -16,7 +16,7 @@ def example_env(tmp_path):
     env = dict(os.environ, VRI_EXAMPLE_SIZE="48", VRI_EXAMPLE_OUT=str(tmp_path), MPLBACKEND="Agg")
     env["PATH"] = "/usr/bin:" + env.get("PATH", "")  # Debian's python3 and jupyter, which have numpy
     # The kernel runs in the notebook's folder: the module's path must be absolute.
-    env["PYTHONPATH"] = str(pathlib.Path(vri.__file__).resolve().parent)
+    env["PYTHONPATH"] = str(pathlib.Path(vri.__file__).resolve().parent.parent)  # the folder holding the package
     return env
 
 

@@ -5,7 +5,7 @@ import re
 import pytest
 import vri
 
-STUB = pathlib.Path(__file__).resolve().parents[1] / "vri.pyi"
+STUB = pathlib.Path(__file__).resolve().parents[1] / "vri" / "__init__.pyi"
 TYPING_ONLY = {"SceneLike", "TransferFunctionLike", "Trace", "RaySignal", "MethodInfo", "MethodParameter"}
 
 

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "exr_output.hpp"
+#include "io/exr_output.hpp"
 #include "progress_bar.hpp"
 #include "render_distributed.hpp"
 #include "scene_options.hpp"

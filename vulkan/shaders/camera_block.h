@@ -21,6 +21,7 @@
 #define VRI_CAM_FIRST 58         /* the chunk's first pixel, */
 #define VRI_CAM_ORTHO 59         /* 1: orthographic, */
 #define VRI_CAM_EXTRAS 60        /* floats a pixel after the block, */
-#define VRI_CAM_PLANES 61        /* the clip planes that follow (0xffffffff: the clip keeps nothing) */
+#define VRI_CAM_PLANES 61        /* the clip planes that follow (0xffffffff: the clip keeps nothing), */
+#define VRI_CAM_KERNEL_CUTS 62   /* 1: pixel_ray leaves the planes to the kernel (a mesh walk: clip_window) */
 #define VRI_CAM_PLANE0 32        /* clip planes (n, d) of unit n, in the frame: 4 slots each, */
 #define VRI_CAM_MAX_PLANES 8     /* up to 8 (slots 32 .. 63) */

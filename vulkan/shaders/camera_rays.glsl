@@ -18,6 +18,7 @@ const uint kCamBoxHi = VRI_CAM_BOX_HI, kCamOrigin = VRI_CAM_ORIGIN, kCamInverse 
 const uint kCamStep = VRI_CAM_STEP, kCamScale = VRI_CAM_SCALE, kCamWidth = VRI_CAM_WIDTH;
 const uint kCamHeight = VRI_CAM_HEIGHT, kCamFirst = VRI_CAM_FIRST, kCamOrtho = VRI_CAM_ORTHO;
 const uint kCamExtras = VRI_CAM_EXTRAS, kCamPlanes = VRI_CAM_PLANES, kCamPlane0 = VRI_CAM_PLANE0;
+const uint kCamKernelCuts = VRI_CAM_KERNEL_CUTS;
 
 DF cam_df(uint slot) { return DF(rays.r[2u * slot], rays.r[2u * slot + 1u]); }
 uint cam_uint(uint at) { return floatBitsToUint(rays.r[at]); }
@@ -31,8 +32,36 @@ struct PixelRay {
   bool hits;      // false: it misses the box (or only touches it)
 };
 
+// The ray r cut at the block's clip planes (SPEC §12 "clip", ClipRegion::cut;
+// a grid's crop box is in the block's box): [t0, t1] narrowed where the ray
+// crosses a plane, kept false where it runs parallel on the cut side.
+void clip_window(PixelRay r, inout DF t0, inout DF t1, inout bool kept) {
+  const uint planes = cam_uint(kCamPlanes);
+  if (planes == 0xffffffffu) kept = false;
+  for (uint i = 0u; i < min(planes, uint(VRI_CAM_MAX_PLANES)); ++i) {
+    const uint at = kCamPlane0 + 4u * i;
+    DF along = DF(0.0, 0.0), height = DF(0.0, 0.0);
+    for (uint a = 0u; a < 3u; ++a) {
+      along = df_add(along, df_mul(cam_df(at + a), r.d[a]));
+      height = df_add(height, df_mul(cam_df(at + a), r.o[a]));
+    }
+    height = df_add(height, cam_df(at + 3u));
+    if (along.hi == 0.0) {  // parallel: kept whole or cut whole
+      if (height.hi < 0.0) kept = false;
+      continue;
+    }
+    const DF t = df_neg(df_div(height, along));
+    if (along.hi > 0.0) {
+      if (df_less(t0, t)) t0 = t;
+    } else {
+      t1 = df_min(t1, t);
+    }
+  }
+}
+
 // The ray of the dispatch's pixel `index` (Camera::ray), clipped to the
-// block's box (clip_to_box) and its clip planes (ClipRegion::cut).
+// block's box (clip_to_box) and, unless the kernel cuts it itself, its clip
+// planes (clip_window).
 PixelRay pixel_ray(uint index) {
   PixelRay r;
   const uint width = cam_uint(kCamWidth), pixel = cam_uint(kCamFirst) + index;
@@ -77,29 +106,7 @@ PixelRay pixel_ray(uint index) {
     r.t1 = bounded ? df_min(r.t1, tb) : tb;
     bounded = true;
   }
-  // The clip planes (SPEC §12 "clip"; its box is in the block's): the ray
-  // kept where n . p + d >= 0, cut where it crosses a plane.
-  const uint planes = cam_uint(kCamPlanes);
-  if (planes == 0xffffffffu) r.hits = false;
-  for (uint i = 0u; i < min(planes, uint(VRI_CAM_MAX_PLANES)); ++i) {
-    const uint at = kCamPlane0 + 4u * i;
-    DF along = DF(0.0, 0.0), height = DF(0.0, 0.0);
-    for (uint a = 0u; a < 3u; ++a) {
-      along = df_add(along, df_mul(cam_df(at + a), r.d[a]));
-      height = df_add(height, df_mul(cam_df(at + a), r.o[a]));
-    }
-    height = df_add(height, cam_df(at + 3u));
-    if (along.hi == 0.0) {  // parallel: kept whole or cut whole
-      if (height.hi < 0.0) r.hits = false;
-      continue;
-    }
-    const DF t = df_neg(df_div(height, along));
-    if (along.hi > 0.0) {
-      if (df_less(r.t0, t)) r.t0 = t;
-    } else {
-      r.t1 = df_min(r.t1, t);
-    }
-  }
+  if (cam_uint(kCamKernelCuts) == 0u) clip_window(r, r.t0, r.t1, r.hits);
   // A camera absurdly far from the box (over ~1e34 of its sizes) overflows: a miss.
   r.hits = r.hits && bounded && df_less(r.t0, r.t1) && !isinf(r.t1.hi);
   return r;

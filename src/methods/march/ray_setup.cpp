@@ -24,7 +24,7 @@ enum Slot {
   kInverse = VRI_CAM_INVERSE, kStep = VRI_CAM_STEP, kScale = VRI_CAM_SCALE, kPlane0 = VRI_CAM_PLANE0
 };
 enum Word { kWidth = VRI_CAM_WIDTH, kHeight = VRI_CAM_HEIGHT, kFirst = VRI_CAM_FIRST, kOrtho = VRI_CAM_ORTHO,
-            kExtras = VRI_CAM_EXTRAS, kPlanes = VRI_CAM_PLANES };
+            kExtras = VRI_CAM_EXTRAS, kPlanes = VRI_CAM_PLANES, kKernelCuts = VRI_CAM_KERNEL_CUTS };
 constexpr std::size_t kMaxClipPlanes = VRI_CAM_MAX_PLANES;
 
 // x as the double-float hi + lo at out[0], out[1].
@@ -43,7 +43,7 @@ void put_word(std::vector<float>& block, int at, std::uint32_t w) { block[at] = 
 
 RayBox grid_box(const GridVolume& volume, double step) {
   const Vec3 s = volume.spacing();
-  RayBox box{volume.box_lo(), volume.box_hi(), volume.origin(), {1 / s.x, 1 / s.y, 1 / s.z}, step, {}, false};
+  RayBox box{volume.box_lo(), volume.box_hi(), volume.origin(), {1 / s.x, 1 / s.y, 1 / s.z}, step, {}, false, false};
   const ClipRegion& clip = volume.clip_region();
   box.planes = clip.planes;
   // The boxes' intersection: clip_to_box on it is the max and min of the
@@ -60,7 +60,15 @@ RayBox grid_box(const GridVolume& volume, double step) {
 
 RayBox mesh_box(const TetMesh& mesh, Vec3 centre) {
   const Vec3 pad = (mesh.box_hi() - mesh.box_lo()) * 1e-3;
-  return {mesh.box_lo() - pad, mesh.box_hi() + pad, centre, {1, 1, 1}, 0, {}, false};
+  RayBox box{mesh.box_lo() - pad, mesh.box_hi() + pad, centre, {1, 1, 1}, 0, mesh.clip_region().planes, false, true};
+  if (const auto& crop = mesh.clip_region().box)
+    for (int a = 0; a < 3; ++a) {
+      Vec3 n{0, 0, 0};
+      n[a] = 1;
+      box.planes.push_back({n, -crop->lo[a]});       // p >= lo
+      box.planes.push_back({-1 * n, crop->hi[a]});   // p <= hi
+    }
+  return box;
 }
 
 std::vector<float> camera_block(const Camera& camera, const RayBox& box, PixelSpan span, int extras) {
@@ -97,6 +105,7 @@ std::vector<float> camera_block(const Camera& camera, const RayBox& box, PixelSp
     throw Error("--backend vulkan: at most " + std::to_string(kMaxClipPlanes) + " clip planes on the GPU, not " +
                 std::to_string(box.planes.size()));
   put_word(block, kPlanes, box.none ? 0xffffffffu : static_cast<std::uint32_t>(box.planes.size()));
+  put_word(block, kKernelCuts, box.kernel_cuts ? 1 : 0);
   for (std::size_t i = 0; i < box.planes.size(); ++i) {
     const ClipPlane& p = box.planes[i];
     const double n = length(p.normal);

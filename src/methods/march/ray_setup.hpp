@@ -28,15 +28,18 @@ struct RayBox {
   Vec3 origin;   // the grid's origin (a mesh: the centre its positions are taken from)
   Vec3 inverse;  // grid units per world unit (a mesh: unused)
   double step = 0;  // the march's step, world units (0: none)
-  // The volume's clip (SPEC §12): its box is in lo, hi; its planes here;
-  // `none` where its box misses the volume's.
+  // The volume's clip (SPEC §12): a grid's crop box is in lo, hi, a mesh's
+  // among its planes; `none` where the crop box misses the grid's box;
+  // `kernel_cuts`: the kernel cuts at the planes itself (clip_window), as a
+  // mesh walk that starts at the box must.
   std::vector<ClipPlane> planes;
-  bool none = false;
+  bool none = false, kernel_cuts = false;
 };
 
 // The grid's box cut by its clip region's box, with the region's planes.
 RayBox grid_box(const GridVolume& volume, double step);
-// The mesh's box widened by 1e-3 of its diagonal on each side, as the CPU's mesh walk.
+// The mesh's box widened by 1e-3 of its diagonal on each side, as the CPU's
+// mesh walk, and its clip as planes (the crop box's six faces after them).
 RayBox mesh_box(const TetMesh& mesh, Vec3 centre);
 
 // The camera block for the pixels of `span`, `extras` floats a pixel

@@ -212,12 +212,19 @@ void main() {
   for (uint a = 0u; a < 3u; ++a)
     o[a] = df_float(df_mul(df_sub(df_add(ray.o[a], df_mul(ray.t0, ray.d[a])), cam_df(kCamOrigin + a)), to_world));
   d = float_direction(ray);
+  // The clip (SPEC §12): the part of the ray kept, in the walk's distances
+  // from the box entry; each piece is trimmed to it, as TetWalk trims.
+  DF c0 = DF(0.0, 0.0), c1 = DF(3.0e38, 0.0);
+  bool kept = true;
+  clip_window(ray, c0, c1, kept);
+  const float w0 = df_float(df_mul(df_sub(c0, ray.t0), to_world));
+  const float w1 = c1.hi >= 3.0e38 ? 3.0e38 : df_float(df_mul(df_sub(c1, ray.t0), to_world));
   float t_exit = 0.0, t_entry = -1.0, hit_t;
   int skip = -1, slot;
   // Each entry is further than the one before, so this ends; a face
   // coincident with the one just left (a seam) may be hit a rounding before
   // the exit, hence the slack.
-  while (ray.hits && T > kStop &&
+  while (ray.hits && kept && w1 > w0 && t_exit < w1 && T > kStop &&
          next_entry(t_exit - 1e-6 * (p.extent + abs(t_exit)), t_entry, skip, hit_t, slot)) {
     t_entry = hit_t;
     int tet = slot / 4, entry_face = slot % 4;
@@ -227,7 +234,12 @@ void main() {
       int face;
       const float t_out = max(exit_of(tet, entry_face, face), t);
       const float s_out = scalar_at(tet, o + t_out * d);
-      if (t_out > t) composite(tet, t, t_out, s, s_out);
+      if (t >= w1) break;
+      if (t_out > t && t_out > w0) {
+        const float a = max(t, w0), b = min(t_out, w1);
+        if (b > a)
+          composite(tet, a, b, a == t ? s : scalar_at(tet, o + a * d), b == t_out ? s_out : scalar_at(tet, o + b * d));
+      }
       t = t_out;
       const int next = neighbors.n[4 * tet + face];
       if (next < 0) {

@@ -7,7 +7,21 @@ import numpy.typing as npt
 
 __version__: str
 
-SceneLike = Union["Scene", Dict[str, Any], str, os.PathLike]
+SceneLike = Union["Scene", Dict[str, Any], str, os.PathLike, "Volume", "Mesh", npt.ArrayLike]
+
+class Image(np.ndarray):
+    """float32 (H, W, 4), premultiplied RGBA (the bytes of `vri render -o X.npy`), with the scene's background."""
+    background: Tuple[float, float, float]
+    def composite(self, background: Optional[Sequence[float]] = None) -> npt.NDArray[np.float32]:
+        """(H, W, 3) in [0, 1]: C + (1 - alpha) background (the scene's by default)."""
+    def to_uint8(self, background: Optional[Sequence[float]] = None) -> npt.NDArray[np.uint8]:
+        """(H, W, 3): the colours of `vri render -o x.png`."""
+    def save(self, path: Union[str, os.PathLike], background: Optional[Sequence[float]] = None) -> None:
+        """.npy, .png or .exr: the bytes `vri render -o PATH` writes."""
+    def _repr_png_(self) -> Optional[bytes]: ...
+
+def colormaps() -> List[str]:
+    """vri's named colour maps."""
 TransferFunctionLike = Union[Dict[str, Any], str, os.PathLike, "Scene"]
 
 class Volume:
@@ -71,7 +85,11 @@ def load_scene(path: Union[str, os.PathLike]) -> Scene:
 def load_volume(path: Union[str, os.PathLike]) -> Union[Volume, Mesh]:
     """A volume file of any format `vri info` reads: a grid (Volume) or tetrahedra (Mesh)."""
 
-def render(scene: SceneLike, *, method: Optional[str] = None, step: Optional[float] = None,
+def render(scene: SceneLike, *, cmap: Optional[str] = None,
+           clim: Optional[Union[Tuple[float, float], str]] = None,
+           opacity: Optional[Union[str, npt.ArrayLike]] = None,
+           spacing: Optional[Sequence[float]] = None, scale: Optional[Sequence[float]] = None,
+           camera: Optional[Dict[str, Any]] = None, method: Optional[str] = None, step: Optional[float] = None,
            tolerance: Optional[float] = None, table_size: Optional[int] = None,
            iterations: Optional[int] = None, width: Optional[int] = None, height: Optional[int] = None,
            threads: int = 0, termination: Optional[float] = None, skip_empty: Optional[bool] = None,
@@ -80,8 +98,11 @@ def render(scene: SceneLike, *, method: Optional[str] = None, step: Optional[flo
            max_work: Optional[float] = None, jitter: Optional[int] = None, fit: Optional[bool] = None,
            azimuth: Optional[float] = None, elevation: Optional[float] = None, roll: Optional[float] = None,
            zoom: Optional[float] = None, backend: Optional[str] = None,
-           clip: Optional[dict] = None) -> npt.NDArray[np.float32]:
+           clip: Optional[dict] = None) -> Image:
     """float32 (H, W, 4), premultiplied RGBA: the same bytes as `vri render -o OUT.npy`.
+    An array, a Volume, a Mesh or a volume file is seen as `vri render VOLUME` sees it, with
+    cmap (vri's or matplotlib's), clim (lo, hi), opacity ('linear', 'sigmoid' or an array),
+    spacing (x, y, z) or scale (z, y, x), camera (keys over the fitted camera).
     `clip`: {"planes": [[nx, ny, nz, d], ...], "box": [[x0, y0, z0], [x1, y1, z1]]}
     in world units, replacing the scene's "clip" (SPEC §12; docs/CLIPPING.md)."""
 

@@ -1,4 +1,4 @@
-#include "exr_output.hpp"
+#include "io/exr_output.hpp"
 
 #include <string>
 
@@ -13,7 +13,7 @@
 #include <OpenEXR/ImfStdIO.h>
 #endif
 
-namespace vri::cli {
+namespace vri {
 
 #if VRI_HAVE_OPENEXR
 bool exr_supported() { return true; }
@@ -51,4 +51,4 @@ void write_exr(const std::filesystem::path& path, const Image&) {
 }
 #endif
 
-}  // namespace vri::cli
+}  // namespace vri

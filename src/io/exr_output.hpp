@@ -7,10 +7,10 @@
 
 #include "vri/image.hpp"
 
-namespace vri::cli {
+namespace vri {
 
 bool exr_supported();
 // Written atomically (staged, then renamed in); vri::Error if it cannot be.
 void write_exr(const std::filesystem::path& path, const Image& image);
 
-}  // namespace vri::cli
+}  // namespace vri
