@@ -12,6 +12,7 @@ pkgs=(cmake g++ make pkg-config nlohmann-json3-dev libcli11-dev libpng-dev zlib1
       # the viewer (viewer/): Boost.Beast, JPEG frames, and its browser test's Chromium
       libboost-dev libturbojpeg0-dev chromium
       libopenexr-dev  # .exr output
+      liblz4-dev  # LZ4-compressed VTK XML files
       libavformat-dev libavcodec-dev libswscale-dev  # vri turntable's .mp4
       # the Vulkan backend (vulkan/): headers and the shader compiler to build;
       # the loader, Mesa's CPU device (lavapipe) and the validation layer to test

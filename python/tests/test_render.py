@@ -189,7 +189,7 @@ def test_the_gil_is_released_while_rendering(root):
 
     def work():
         window["start"] = time.monotonic()
-        vri.render(scene, method="exact", tolerance=1e-6, width=200, height=200, threads=1)
+        vri.render(scene, method="exact", tolerance=1e-6, width=320, height=320, threads=1)  # ~0.8 s: over 0.3 on a quiet machine too
         window["end"] = time.monotonic()
 
     worker = threading.Thread(target=work)

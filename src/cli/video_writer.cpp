@@ -84,6 +84,9 @@ struct VideoWriter::State {
       const int r = ffmpeg().avcodec_receive_packet(codec, packet);
       if (r == AVERROR(EAGAIN) || r == AVERROR_EOF) return;
       check(r, "encoding");
+      // Each frame lasts one tick of 1/fps: said on the packet, else MP4
+      // gives the last frame no duration (the video a frame short: issue 51).
+      if (packet->duration <= 0) packet->duration = 1;
       ffmpeg().av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
       check(ffmpeg().av_interleaved_write_frame(format, packet), "writing");

@@ -8,9 +8,13 @@
 #include <algorithm>
 #include <bit>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <string>
+#include <string_view>
 
 #include "grid_samples.hpp"
 #include "tiff_handle.hpp"
@@ -152,14 +156,41 @@ struct Pages {
   std::function<void(const std::function<void(std::uint32_t, const Handle&, const std::string&)>&)> walk;
 };
 
+// ImageJ's voxel size (a stack ImageJ or Fiji saved: its ImageDescription
+// starts "ImageJ="): x and y from XResolution and YResolution (pixels per
+// unit), z from the description's "spacing=". Only for ImageJ's files: a
+// scanner's 72 dpi is not a voxel size. Values that are not positive and
+// finite are left at 1.
+Vec3 imagej_spacing(const Handle& h) {
+  TIFF* tif = h.get();
+  Vec3 spacing{1, 1, 1};
+  char* text = nullptr;
+  if (!TIFFGetField(tif, TIFFTAG_IMAGEDESCRIPTION, &text) || !text || std::string_view(text).rfind("ImageJ=", 0) != 0)
+    return spacing;
+  const auto take = [](double v, double& into) {
+    if (v > 0 && std::isfinite(v)) into = v;
+  };
+  float xres = 0, yres = 0;
+  if (TIFFGetField(tif, TIFFTAG_XRESOLUTION, &xres) && xres > 0) take(1.0 / double(xres), spacing.x);
+  if (TIFFGetField(tif, TIFFTAG_YRESOLUTION, &yres) && yres > 0) take(1.0 / double(yres), spacing.y);
+  const std::string description(text);
+  if (const auto at = description.find("\nspacing="); at != std::string::npos)
+    take(std::strtod(description.c_str() + at + 9, nullptr), spacing.z);
+  return spacing;
+}
+
 GridVolume read_pages(const Pages& pages) {
-  // First pass: formats, sizes, the codecs' bounds.
+  // First pass: formats, sizes, the codecs' bounds, ImageJ's voxel size.
   PageFormat first;
+  Vec3 spacing{1, 1, 1};
   std::uint32_t count = 0;
   std::uint64_t expansion = 1;
   pages.walk([&](std::uint32_t z, const Handle& h, const std::string& where) {
     const PageFormat f = page_format(h, where);
-    if (z == 0) first = f;
+    if (z == 0) {
+      first = f;
+      spacing = imagej_spacing(h);
+    }
     else if (!(f == first))
       throw Error(where + ": is " + format_text(f) + "; the first is " + format_text(first) +
                   " (every page must have the same size and sample type)");
@@ -201,7 +232,9 @@ GridVolume read_pages(const Pages& pages) {
     if (read != count) throw Error(pages.where + ": changed while it was read");
   });
   return naming_file(pages.where, [&] {
-    return GridVolume({int(dims[0]), int(dims[1]), int(dims[2])}, std::move(samples));
+    GridVolume volume({int(dims[0]), int(dims[1]), int(dims[2])}, std::move(samples));
+    volume.set_spacing(spacing);
+    return volume;
   });
 }
 

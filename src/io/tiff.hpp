@@ -15,8 +15,11 @@
 //   their type, the others become float32 (grid_samples.hpp).
 // - Any compression libtiff decodes (none, PackBits, LZW, Deflate, ...),
 //   strips or tiles; either byte order.
-// - Spacing 1 1 1 and origin 0, whatever XResolution/YResolution say (as
-//   ParaView's TIFF reader defaults); a scene's "spacing"/"origin" override.
+// - Spacing 1 1 1 and origin 0, except for a stack ImageJ or Fiji saved
+//   (its ImageDescription starts "ImageJ="): there x and y are 1 /
+//   XResolution and 1 / YResolution and z the description's "spacing=", as
+//   Fiji and tifffile read them (another file's dpi is not a voxel size, as
+//   ParaView's TIFF reader assumes); a scene's "spacing"/"origin" override.
 // Bad input ends in one vri::Error naming the file (and page): libtiff's own
 // messages are captured into it, never printed. Sizes are checked before
 // anything is allocated (GridVolume::checked_sample_count, the memory

@@ -57,6 +57,12 @@ GridVolume parse(std::string_view text, const std::string& wanted) {
     if (lo < -kLimit || hi > kLimit || hi < lo) throw Error("Extent '" + extent_text + "' is not a valid extent");
     dims[a] = hi - lo + 1;
   }
+  // Cell data (a value per cell, VTK's CellData) where the points hold no
+  // scalars to render: the grid of the cells' centres, one point fewer a side
+  // and half a step in (as ParaView's Cell Centers filter places them).
+  const bool cells = !doc.has_scalars("PointData", wanted) && doc.has_scalars("CellData", wanted);
+  if (cells)
+    for (std::int64_t& d : dims) d -= 1;
   // Refused before anything of the volume's size is allocated.
   const std::uint64_t n = GridVolume::checked_sample_count(dims);
   const auto origin_in = numbers<double>(doc.dataset.attr("Origin", "0 0 0"), 3, "Origin");
@@ -78,9 +84,11 @@ GridVolume parse(std::string_view text, const std::string& wanted) {
     flipped[a] = step < 0;
     spacing[a] = std::abs(step);
     origin[a] = origin_in[a] + step * double(extent[2 * a + (flipped[a] ? 1 : 0)]);
+    if (cells) origin[a] += 0.5 * spacing[a];
   }
 
-  const vtk::xml::Array& array = doc.point_array(wanted, doc.active_scalars);
+  const vtk::xml::Array& array = cells ? doc.section_array("CellData", wanted, doc.active_cell_scalars)
+                                       : doc.point_array(wanted, doc.active_scalars);
   GridVolume::Samples samples = vtk::xml::for_array(array, [&] {
     if (array.format == "ascii") {
       const std::string_view data = text.substr(array.content_begin, array.content_end - array.content_begin);

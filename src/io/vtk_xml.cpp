@@ -2,6 +2,11 @@
 #include "vtk_xml.hpp"
 
 #include <zlib.h>
+#if VRI_HAVE_LZ4
+#include <lz4.h>
+#endif
+
+#include <limits>
 
 #include <algorithm>
 #include <cctype>
@@ -136,7 +141,7 @@ Payload::Payload(const Document& doc, const Array& a, std::uint64_t bytes) : for
   }
   const std::size_t hs = num_size(format_.header);
   auto word = [&](std::uint64_t k) { return header_word(format_, stream_, k); };
-  if (!format_.zlib) {
+  if (format_.compressor == Compressor::None) {
     const std::uint64_t n = word(0);
     if (n != bytes) throw Error("binary array holds " + std::to_string(n) + " bytes, expected " + std::to_string(bytes));
     if (stream_.size() - hs < n) throw Error("binary array ends early");
@@ -148,9 +153,9 @@ Payload::Payload(const Document& doc, const Array& a, std::uint64_t bytes) : for
     throw Error("compressed header declares " + std::to_string(blocks) + " blocks, more than the data holds");
   std::uint64_t at = (3 + blocks) * hs;
   if (at > stream_.size()) throw Error("compressed header ends early");
-  // zlib expands at most 1032:1, so a block that claims more is refused before
-  // its output is allocated.
-  constexpr std::uint64_t kMaxRatio = 1032;
+  // zlib expands at most 1032:1 and LZ4 255:1, so a block that claims more
+  // is refused before its output is allocated.
+  const std::uint64_t kMaxRatio = format_.compressor == Compressor::LZ4 ? 255 : 1032;
   std::uint64_t total = 0;
   for (std::uint64_t b = 0; b < blocks; ++b) {
     const std::uint64_t csize = word(3 + b), usize = (b + 1 == blocks && last != 0) ? last : block_size;
@@ -166,12 +171,23 @@ Payload::Payload(const Document& doc, const Array& a, std::uint64_t bytes) : for
 
 void Payload::copy_to(std::span<std::byte> out) const {
   if (out.size() != bytes_) throw Error("internal: payload of " + std::to_string(bytes_) + " bytes copied to " + std::to_string(out.size()));
-  if (!format_.zlib) {
+  if (format_.compressor == Compressor::None) {
     std::copy_n(stream_.begin() + data_at_, bytes_, out.begin());
     return;
   }
   std::uint64_t filled = 0;
   for (const Block& b : blocks_) {
+    if (format_.compressor == Compressor::LZ4) {
+#if VRI_HAVE_LZ4
+      constexpr std::uint64_t kInt = std::numeric_limits<int>::max();
+      if (b.csize > kInt || b.usize > kInt ||
+          LZ4_decompress_safe(reinterpret_cast<const char*>(stream_.data() + b.at), reinterpret_cast<char*>(out.data() + filled),
+                              int(b.csize), int(b.usize)) != int(b.usize))
+        throw Error("cannot decompress an LZ4 block");
+      filled += b.usize;
+      continue;
+#endif
+    }
     uLongf len = b.usize;
     if (uncompress(reinterpret_cast<Bytef*>(out.data() + filled), &len,
                    reinterpret_cast<const Bytef*>(stream_.data() + b.at), b.csize) != Z_OK || len != b.usize)
@@ -187,14 +203,25 @@ const Array* Document::find(const std::string& section, const std::string& name)
 }
 
 const Array& Document::point_array(const std::string& wanted, const std::string& active) const {
-  std::vector<const Array*> points;
+  return section_array("PointData", wanted, active);
+}
+
+const Array& Document::section_array(const std::string& section, const std::string& wanted,
+                                     const std::string& active) const {
+  std::vector<const Array*> found;
   std::vector<NamedArray> named;
   for (const auto& a : arrays)
-    if (a.section == "PointData") {
-      points.push_back(&a);
+    if (a.section == section) {
+      found.push_back(&a);
       named.push_back({a.name, a.components});
     }
-  return *points[choose_point_array(named, wanted, active)];
+  return *found[choose_point_array(named, wanted, active)];
+}
+
+bool Document::has_scalars(const std::string& section, const std::string& wanted) const {
+  for (const auto& a : arrays)
+    if (a.section == section && (wanted.empty() ? a.components == 1 : a.name == wanted)) return true;
+  return false;
 }
 
 Document read_document(std::string_view text, const std::string& type) {
@@ -219,9 +246,11 @@ Document read_document(std::string_view text, const std::string& type) {
       if (h != "UInt32" && h != "UInt64") throw Error("unsupported header_type '" + h + "'");
       doc.format.header = h == "UInt64" ? Num::UInt64 : Num::UInt32;
       const std::string c = tag->attr("compressor");
-      if (!c.empty() && c != "vtkZLibDataCompressor")
-        throw Error("unsupported compressor '" + c + "' (only vtkZLibDataCompressor)");
-      doc.format.zlib = !c.empty();
+      if (c == "vtkLZ4DataCompressor" && !VRI_HAVE_LZ4)
+        throw Error("is compressed with LZ4, which this build of vri cannot read (built without liblz4)");
+      if (!c.empty() && c != "vtkZLibDataCompressor" && c != "vtkLZ4DataCompressor")
+        throw Error("unsupported compressor '" + c + "' (vtkZLibDataCompressor and vtkLZ4DataCompressor are read)");
+      doc.format.compressor = c.empty() ? Compressor::None : c == "vtkLZ4DataCompressor" ? Compressor::LZ4 : Compressor::ZLib;
     } else if (tag->name == type) {
       doc.dataset = *tag;
     } else if (tag->name == "Piece") {
@@ -229,6 +258,7 @@ Document read_document(std::string_view text, const std::string& type) {
       doc.piece = *tag;
     } else if (tag->name == "Points" || tag->name == "Cells" || tag->name == "PointData" || tag->name == "CellData") {
       if (tag->name == "PointData") doc.active_scalars = tag->attr("Scalars");
+      if (tag->name == "CellData") doc.active_cell_scalars = tag->attr("Scalars");
       if (!tag->self_closing) section = tag->name;
     } else if (tag->name == "DataArray") {
       Array a;

@@ -38,10 +38,11 @@ struct Tag {
 std::optional<Tag> next_tag(std::string_view text, std::size_t& pos);
 
 // How the binary arrays of a file are laid out (the <VTKFile> attributes).
+enum class Compressor { None, ZLib, LZ4 };  // vtkZLibDataCompressor, vtkLZ4DataCompressor
 struct Format {
   bool big_endian = false;
   Num header = Num::UInt32;
-  bool zlib = false;
+  Compressor compressor = Compressor::None;
 };
 
 struct Array {
@@ -58,7 +59,8 @@ struct Document {
   Format format;
   Tag dataset;                 // <ImageData ...>, <UnstructuredGrid>
   Tag piece;                   // the one <Piece>
-  std::string active_scalars;  // <PointData Scalars="...">
+  std::string active_scalars;       // <PointData Scalars="...">
+  std::string active_cell_scalars;  // <CellData Scalars="...">
   std::vector<Array> arrays;
   std::optional<std::size_t> appended;  // first byte of the appended data (after '_')
   std::string appended_encoding;
@@ -68,6 +70,11 @@ struct Document {
   // The point array to render: choose_point_array over the PointData arrays
   // with `active` as the active scalars (active_scalars, or "" for none).
   const Array& point_array(const std::string& wanted, const std::string& active) const;
+  // The same over the arrays of `section` (PointData or CellData).
+  const Array& section_array(const std::string& section, const std::string& wanted, const std::string& active) const;
+  // Whether `section` holds scalars to render: the one named `wanted`, or
+  // (none wanted) a one-component array.
+  bool has_scalars(const std::string& section, const std::string& wanted) const;
 };
 
 // Scans `text`; vri::Error unless it is a <VTKFile> of `type` with one <Piece>.

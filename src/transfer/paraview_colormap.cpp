@@ -405,11 +405,9 @@ std::vector<ColormapPoint> linear_colors(const ParaviewColormap& map, double tol
   return out;
 }
 
-std::vector<TauPoint> linear_opacity(const std::vector<OpacityNode>& nodes, double tolerance) {
-  for (const OpacityNode& n : nodes)
-    if (!(n.alpha < 1))
-      throw Error("alpha " + number_text(n.alpha) + " at x = " + number_text(n.x) +
-                  " is opaque at any distance (tau = -ln(1 - alpha) is infinite); vri needs alpha < 1");
+std::vector<TauPoint> linear_opacity(const std::vector<OpacityNode>& given, double tolerance) {
+  std::vector<OpacityNode> nodes = given;  // alpha 1 (opaque at any distance) as the largest below it
+  for (OpacityNode& n : nodes) n.alpha = std::min(n.alpha, kOpaqueAlpha);
   const std::size_t per = per_interval(nodes.size(), 32);
   Samples s;  // v[0]: alpha
   Sampler sampler(s, tolerance);

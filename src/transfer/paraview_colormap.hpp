@@ -60,11 +60,16 @@ std::vector<ColormapPoint> linear_colors(const ParaviewColormap& map, double tol
 // sharpness curve) as points (x, tau), tau = -ln(1 - alpha) (unit distance 1),
 // between which tau is linear, so that alpha = 1 - exp(-tau) is within
 // `tolerance` of the curve's samples (32 even samples per interval, refined
-// as the colours'; sharpness > 0.99: VTK's step, exact). vri::Error if a
-// node's alpha is 1 (opaque at any distance: tau would be infinite).
+// as the colours'; sharpness > 0.99: VTK's step, exact). A node's alpha of
+// 1 (opaque at any distance: tau would be infinite) is read as kOpaqueAlpha.
 struct TauPoint {
   double x, tau;
 };
+// The largest alpha a ParaView preset's 1 stands for: the largest double
+// below 1 that float tables tell from it, 1 - 2^-24, so the largest finite
+// extinction it gives is tau = 24 ln 2 = 16.64 per unit distance (6e-8 of
+// the light left over it).
+inline constexpr double kOpaqueAlpha = 1 - 0x1p-24;
 std::vector<TauPoint> linear_opacity(const std::vector<OpacityNode>& nodes, double tolerance = 1.0 / 512);
 
 // VTK's colour between the colours a (s = 0) and b (s = 1) in a colour space

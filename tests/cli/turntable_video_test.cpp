@@ -21,6 +21,7 @@ namespace {
 
 struct Decoded {
   int frames = 0, width = 0, height = 0;
+  double seconds = 0;  // the stream's duration
   std::string codec;
   std::vector<std::uint8_t> first_rgb;
 };
@@ -36,6 +37,8 @@ Decoded decode(const std::filesystem::path& file) {
   avcodec_parameters_to_context(codec, format->streams[index]->codecpar);
   avcodec_open2(codec, decoder, nullptr);
   d.codec = decoder->name;
+  const AVStream* stream = format->streams[index];
+  d.seconds = double(stream->duration) * av_q2d(stream->time_base);
   AVPacket* packet = av_packet_alloc();
   AVFrame* frame = av_frame_alloc();
   auto receive = [&] {
@@ -76,6 +79,7 @@ TEST(TurntableVideo, DecodesToTheRenderedFrames) {
   ASSERT_EQ(run("render " + scene + " -o " + (dir / "f0.npy").string() + flags, dir).code, 0);
   const Decoded d = decode(dir / "o.mp4");
   EXPECT_EQ(d.frames, 12);
+  EXPECT_NEAR(d.seconds, 12 / 24.0, 1e-9);  // the last frame shown its 1/24 s too
   EXPECT_EQ(d.width, 64);  // padded to even for yuv420p
   EXPECT_EQ(d.height, 48);
   // The encoder named in the summary made what the decoder reads.

@@ -6,6 +6,7 @@
 #include "io/tiff.hpp"
 
 #include <gtest/gtest.h>
+#include <tiffio.h>
 
 #include <chrono>
 #include <cmath>
@@ -185,6 +186,48 @@ std::vector<std::byte> crafted_tiff(const std::vector<Page>& pages, const std::v
 
 void write(const fs::path& path, const std::vector<std::byte>& bytes) {
   std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+// A stack as ImageJ saves it: pixels per unit in X/YResolution, the slice
+// spacing in its ImageDescription; `description` null leaves the tag out.
+void write_imagej_stack(const fs::path& path, const char* description, float xres, float yres) {
+  TIFF* tif = TIFFOpen(path.c_str(), "w");
+  ASSERT_NE(tif, nullptr);
+  const std::uint8_t row[4] = {0, 50, 100, 200};
+  for (int page = 0; page < 3; ++page) {
+    TIFFSetField(tif, TIFFTAG_IMAGEWIDTH, 4);
+    TIFFSetField(tif, TIFFTAG_IMAGELENGTH, 2);
+    TIFFSetField(tif, TIFFTAG_BITSPERSAMPLE, 8);
+    TIFFSetField(tif, TIFFTAG_SAMPLESPERPIXEL, 1);
+    TIFFSetField(tif, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_MINISBLACK);
+    TIFFSetField(tif, TIFFTAG_XRESOLUTION, xres);
+    TIFFSetField(tif, TIFFTAG_YRESOLUTION, yres);
+    TIFFSetField(tif, TIFFTAG_RESOLUTIONUNIT, RESUNIT_NONE);
+    if (description) TIFFSetField(tif, TIFFTAG_IMAGEDESCRIPTION, description);
+    for (int y = 0; y < 2; ++y) TIFFWriteScanline(tif, const_cast<std::uint8_t*>(row), y, 0);
+    TIFFWriteDirectory(tif);
+  }
+  TIFFClose(tif);
+}
+
+// ImageJ's voxel size (issue 51 item 6): x, y from the resolutions, z from "spacing=".
+TEST(TiffVolume, ImageJStacksKeepTheirVoxelSize) {
+  test::TempDir dir;
+  write_imagej_stack(dir / "fiji.tif", "ImageJ=1.54f\nimages=3\nslices=3\nunit=micron\nspacing=2.5\nloop=false\n", 4, 2);
+  const GridVolume v = read_tiff_volume(dir / "fiji.tif");
+  EXPECT_EQ(v.dims(), (std::array<int, 3>{4, 2, 3}));
+  EXPECT_DOUBLE_EQ(v.spacing().x, 0.25);
+  EXPECT_DOUBLE_EQ(v.spacing().y, 0.5);
+  EXPECT_DOUBLE_EQ(v.spacing().z, 2.5);
+  // Without "spacing=", z stays 1; a bad value is left at 1 too.
+  write_imagej_stack(dir / "flat.tif", "ImageJ=1.54f\nimages=3\nspacing=-4\n", 4, 4);
+  EXPECT_DOUBLE_EQ(read_tiff_volume(dir / "flat.tif").spacing().z, 1);
+  EXPECT_DOUBLE_EQ(read_tiff_volume(dir / "flat.tif").spacing().x, 0.25);
+  // Not ImageJ's: a scanner's 72 dpi is no voxel size.
+  write_imagej_stack(dir / "scan.tif", "scanned page", 72, 72);
+  EXPECT_DOUBLE_EQ(read_tiff_volume(dir / "scan.tif").spacing().x, 1);
+  write_imagej_stack(dir / "bare.tif", nullptr, 72, 72);
+  EXPECT_DOUBLE_EQ(read_tiff_volume(dir / "bare.tif").spacing().y, 1);
 }
 
 TEST(TiffVolume, CraftedFilesAreValid) {

@@ -5,6 +5,9 @@
 #include "io/vti.hpp"
 
 #include <gtest/gtest.h>
+#if !VRI_NO_LZ4_TEST
+#include <lz4.h>
+#endif
 
 #include <cstdint>
 #include <cstring>
@@ -131,6 +134,55 @@ TEST(Vti, ReadsEveryNumericType) {
       EXPECT_EQ(test::floats(v), std::vector<float>(values.begin(), values.end())) << t;
     }
   }
+}
+
+#if !VRI_NO_LZ4_TEST
+// vtkLZ4DataCompressor (issue 51 item 6): blocks of the UInt32 header's
+// sizes, decompressed with liblz4; a corrupt block is one line.
+TEST(Vti, ReadsLz4CompressedArrays) {
+  std::vector<double> values;
+  for (int i = 0; i < 4 * 3 * 2; ++i) values.push_back(i % 5 * 10);
+  const std::string data = packed("UInt8", values);
+  std::string compressed(static_cast<std::size_t>(LZ4_compressBound(int(data.size()))), '\0');
+  compressed.resize(static_cast<std::size_t>(
+      LZ4_compress_default(data.data(), compressed.data(), int(data.size()), int(compressed.size()))));
+  const std::string header = header32(1) + header32(data.size()) + header32(data.size()) + header32(compressed.size());
+  const std::string array = R"(<DataArray type="UInt8" Name="s" format="appended" offset="0"/>)";
+  const std::string file =
+      vti(array, "0 3 0 2 0 1", R"(Origin="0 0 0" Spacing="1 1 1")", R"(compressor="vtkLZ4DataCompressor")", header + compressed);
+  const GridVolume v = parse_vti(test::bytes_of(file), "", "lz4.vti");
+  EXPECT_EQ(v.dims(), (std::array<int, 3>{4, 3, 2}));
+  EXPECT_EQ(test::floats(v), std::vector<float>(values.begin(), values.end()));
+  std::string corrupt = compressed;
+  corrupt[0] = '\xff';
+  const std::string bad = vti(array, "0 3 0 2 0 1", R"(Origin="0 0 0" Spacing="1 1 1")",
+                              R"(compressor="vtkLZ4DataCompressor")", header + corrupt);
+  test::expect_mesh_error([&] { parse_vti(test::bytes_of(bad), "", "t.vti"); }, "cannot decompress an LZ4 block");
+}
+#endif
+
+// Cell data: the grid of the cells' centres (one point fewer a side, half a
+// step in); point scalars, where there are any, win.
+TEST(Vti, CellDataIsTheGridOfTheCellCentres) {
+  const std::string cells = R"(<?xml version="1.0"?>
+<VTKFile type="ImageData" version="0.1" byte_order="LittleEndian">
+<ImageData WholeExtent="0 3 0 2 0 2" Origin="1 2 3" Spacing="0.5 1 2">
+<Piece Extent="0 3 0 2 0 2"><CellData Scalars="c">
+<DataArray type="Float32" Name="c" format="ascii">0 1 2 3 4 5 6 7 8 9 10 11</DataArray>
+</CellData></Piece></ImageData></VTKFile>)";
+  const GridVolume v = parse_vti(test::bytes_of(cells), "", "cells.vti");
+  EXPECT_EQ(v.dims(), (std::array<int, 3>{3, 2, 2}));
+  EXPECT_DOUBLE_EQ(v.origin().x, 1.25);
+  EXPECT_DOUBLE_EQ(v.origin().y, 2.5);
+  EXPECT_DOUBLE_EQ(v.origin().z, 4);
+  EXPECT_DOUBLE_EQ(v.spacing().z, 2);
+  EXPECT_EQ(v.at(2, 1, 1), 11);
+  EXPECT_EQ(v.at(1, 0, 1), 7);
+  // Cell data one cell thin on an axis leaves a grid of one point there: refused.
+  std::string thin = cells;
+  thin.replace(thin.find("0 3 0 2 0 2"), 11, "0 3 0 2 0 1");
+  thin.replace(thin.find("0 3 0 2 0 2"), 11, "0 3 0 2 0 1");
+  EXPECT_THROW(parse_vti(test::bytes_of(thin), "", "thin.vti"), Error);
 }
 
 TEST(Vti, RefusesBadFilesWithOneLine) {

@@ -50,8 +50,8 @@ TEST(Vtu, RefusesBadFilesWithOneLine) {
   test::expect_mesh_error(parse(vtu("", "10", "0 1 nan 3")), "non-finite scalar");
   test::expect_mesh_error(parse(vtu("", "10", "0 1")), "fewer than 4 values");
   test::expect_mesh_error(parse(vtu("", "10", "0 1 2 3"), "t"), "no point scalars named 't' (the file has: s)");
-  test::expect_mesh_error(parse(vtu(R"(compressor="vtkLZ4DataCompressor")", "10", "0 1 2 3")),
-                          "unsupported compressor");
+  test::expect_mesh_error(parse(vtu(R"(compressor="vtkLZMADataCompressor")", "10", "0 1 2 3")),
+                          "unsupported compressor 'vtkLZMADataCompressor' (vtkZLibDataCompressor and vtkLZ4DataCompressor are read)");
   test::expect_mesh_error(parse(R"(<VTKFile type="ImageData">)"), "only UnstructuredGrid");
   test::expect_mesh_error(parse("<VTKFile type=\"UnstructuredGrid\"><Piece NumberOfPoints=\"4\""), "unterminated");
 }

@@ -195,21 +195,20 @@ TEST(ParaviewColormap, RefusesMalformedPresetsWithOneClearLine) {
   EXPECT_EQ(parse_paraview_colormap(R"({"Name": "Solo", "RGBPoints": [0, 0, 0, 0]})", "t").name, "Solo");
 }
 
-TEST(ParaviewColormap, OpaqueAlphaIsRefusedUnlessOpacityIsGiven) {
+// ParaView's alpha 1 (opaque at any distance) is read as 1 - 2^-24: the
+// largest finite extinction, 24 ln 2 per unit distance (issue 51 item 6).
+TEST(ParaviewColormap, OpaqueAlphaIsTheLargestFiniteExtinction) {
   test::TempDir dir;
   std::ofstream(dir.path / "opaque.json")
       << R"([{"Name": "O", "RGBPoints": [0, 0, 0, 0, 1, 1, 1, 1], "Points": [0, 0, 0.5, 0, 1, 1, 0.5, 0]}])";
-  try {
-    parse_transfer_function(R"({"paraview": "opaque.json"})", "tf", nullptr, dir.path);
-    ADD_FAILURE();
-  } catch (const Error& e) {
-    const std::string msg = e.what();
-    EXPECT_NE(msg.find("tf: paraview: ParaView colour map '"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("preset 'O': Points: alpha 1 at x = 1 is opaque at any distance"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("or give \"opacity\""), std::string::npos) << msg;
-  }
-  EXPECT_NO_THROW(parse_transfer_function(R"({"paraview": "opaque.json", "opacity": [[0, 0], [1, 3]]})", "tf", nullptr,
-                                          dir.path));
+  const TransferFunction tf = parse_transfer_function(R"({"paraview": "opaque.json"})", "tf", nullptr, dir.path);
+  EXPECT_DOUBLE_EQ(tf.points().back().tau, 24 * std::log(2.0));
+  EXPECT_DOUBLE_EQ(tf.points().front().tau, 0);
+  // alpha of the largest extinction: 1 - 2^-24 over a unit distance
+  EXPECT_NEAR(-std::expm1(-tf.points().back().tau), 1 - 0x1p-24, 1e-15);
+  const TransferFunction given =
+      parse_transfer_function(R"({"paraview": "opaque.json", "opacity": [[0, 0], [1, 3]]})", "tf", nullptr, dir.path);
+  EXPECT_DOUBLE_EQ(given.points().back().tau, 3);
 }
 
 TEST(ParaviewColormap, MissingFileIsAFileErrorNamingTheKey) {
