@@ -28,7 +28,11 @@ first or the last point, every point at one scalar, coincident and
 near-coincident points, spikes 1e-3 to 0.2 of the range wide, 50–500 points,
 colour that changes where the extinction is 0 or 1e-9), extinctions scaled by
 1e-6 to 1e15, cameras outside, inside, grazing a face and orthographic along a
-grid axis, 12 × 12 pixels, lighting on in 3 cases of 10 (shininess up to 1e3).
+grid axis, 12 × 12 pixels, lighting on in 3 cases of 10 (shininess up to 1e3),
+clipped in about 1 case of 3 (SPEC §12 "clip": oblique planes, a plane on a
+grid plane, a plane the view runs along, crop boxes, a box that keeps
+nothing; docs/CLIPPING.md), the independent reference cutting the ray on
+its own.
 
 The checks, each a documented bound:
 
