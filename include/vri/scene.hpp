@@ -61,9 +61,14 @@ struct VolumeLook {
   std::string colormap, opacity, range;  // empty: as `vri info` suggests
 };
 Scene volume_scene(Volume volume, const VolumeLook& look = {});
-// Whether the file holds a scene (JSON: its first non-blank byte is '{')
-// rather than a volume; false, without reading it, unless a regular file.
-bool is_scene_file(const std::filesystem::path& path);
+// Whether the path is a volume file standing where a scene does: a regular
+// file whose first non-blank byte is not '{' (a scene's JSON). Anything else
+// - a scene, a missing file, a FIFO (not read, nor waited on) - is false,
+// left to the scene loader and its messages.
+bool is_volume_file(const std::filesystem::path& path);
+
+// The histogram of a grid's samples or a mesh's point scalars over the data's range.
+Histogram histogram(const Volume& volume, int bins = 256);
 
 // The box a volume fills: a grid's (SPEC §1), a mesh's points' bounding box.
 std::pair<Vec3, Vec3> bounds(const Volume& volume);

@@ -82,6 +82,8 @@ void bind_images(py::module_& m) {
         py::arg("opacity") = "", py::arg("range") = "",
         "The scene (JSON, without its volume) of `vri render VOLUME --colormap --opacity --range`.");
   m.attr("_exr_supported") = exr_supported();
+  m.def("_is_volume_file", [](const fs::path& path) { return is_volume_file(path); }, py::arg("path"),
+        "Whether the path is a volume file standing where a scene does (not a scene's JSON).");
   m.def("_colormap", [](const std::string& name) -> py::object {
         const Colormap* map = find_colormap(name);
         if (!map) return py::none();

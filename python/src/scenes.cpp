@@ -66,9 +66,7 @@ std::shared_ptr<Scene> scene_of(const py::handle& o) {
   if (py::isinstance<py::dict>(o)) return scene_from_dict(o.cast<py::dict>(), std::nullopt);
   if (is_path(o)) {  // a scene file, or a volume file seen as `vri render VOLUME` sees it (SPEC §12)
     const fs::path path = o.cast<fs::path>();
-    std::error_code error;
-    if (fs::is_regular_file(path, error) && !is_scene_file(path))
-      return std::make_shared<Scene>(volume_scene(load_volume(path)));
+    if (is_volume_file(path)) return std::make_shared<Scene>(volume_scene(load_volume(path)));
     return std::make_shared<Scene>(load_scene(path));
   }
   throw py::type_error("expected a vri.Scene, a dict of scene keys, a scene file path or a volume file path, got " +

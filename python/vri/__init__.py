@@ -67,14 +67,6 @@ def _is_path(x):
     return isinstance(x, (str, os.PathLike))
 
 
-def _is_scene_file(path):
-    import os
-    if not os.path.isfile(path):
-        return True  # the scene loader says what is wrong with it
-    with open(path, "rb") as f:
-        return f.read(4096).lstrip()[:1] == b"{"
-
-
 def _voxel_unit(volume):
     return min(volume.spacing) if isinstance(volume, Volume) else 1.0  # noqa: F405
 
@@ -86,17 +78,6 @@ def _range_text(clim):
         return clim
     lo, hi = (float(c) for c in clim)
     return f"{lo!r},{hi!r}"
-
-
-def _range_json(clim):
-    if clim is None or clim == "data":
-        return "data"
-    if isinstance(clim, str) and clim.startswith("p"):
-        lo, hi = clim[1:].split(",p")
-        return {"percentiles": [float(lo), float(hi)]}
-    if isinstance(clim, str):
-        clim = clim.split(",")
-    return [float(clim[0]), float(clim[1])]
 
 
 def _colours(name):
@@ -126,7 +107,8 @@ def _volume_scene(volume, cmap, clim, opacity, camera):
     if own and not custom_opacity:  # the C++ scene itself: the CLI's bytes
         scene = json.loads(_vri._volume_scene_json(volume, cmap or "", shape, _range_text(clim)))
     else:
-        base = json.loads(_vri._volume_scene_json(volume, "grayscale", shape or "ramp"))
+        # the C++ scene for its opacity curve and "range" (checked as --opacity and --range)
+        base = json.loads(_vri._volume_scene_json(volume, "grayscale", shape or "ramp", _range_text(clim)))
         if custom_opacity:  # opacities a in [0, 1) per voxel, even over the range (VTK's unit distance)
             a = _np.clip(_np.asarray(opacity, dtype=float).ravel(), 0, 1 - 1e-6)
             if a.size < 2:
@@ -141,7 +123,7 @@ def _volume_scene(volume, cmap, clim, opacity, camera):
         points = [[x, *(float(_np.interp(x, cx, [c[k] for c in colours])) for k in (1, 2, 3)),
                    float(_np.interp(x, xs, taus))] for x in grid]
         scene = base
-        scene["transfer_function"] = {"points": points, "range": _range_json(clim)}
+        scene["transfer_function"] = {"points": points, "range": base["transfer_function"].get("range", "data")}
     if camera is not None:
         scene["camera"].update(camera)
     scene["volume"] = volume
@@ -153,7 +135,7 @@ def _scene(scene, cmap=None, clim=None, opacity=None, spacing=None, scale=None, 
     look = any(v is not None for v in (cmap, clim, opacity, camera))
     if isinstance(scene, (Volume, Mesh)):  # noqa: F405
         volume = scene
-    elif _is_path(scene) and not _is_scene_file(scene):
+    elif _is_path(scene) and _vri._is_volume_file(scene):
         volume = load_volume(scene)  # noqa: F405
     elif isinstance(scene, Scene) or isinstance(scene, dict) or _is_path(scene):  # noqa: F405
         if look or spacing is not None or scale is not None:

@@ -63,7 +63,7 @@ int run_info(const InfoArgs& a) {
   }();
   const auto [lo, hi] = bounds(volume);
   std::cout << "file: " << a.file << " (" << format_name(format) << ")\n";
-  Histogram h;
+  const Histogram h = histogram(volume);  // 256 bins: the plot's, and the suggestion `vri render VOLUME` makes
   if (const auto* g = std::get_if<GridVolume>(&volume)) {
     const auto& d = g->dims();
     std::cout << "kind: regular grid\n"
@@ -71,12 +71,10 @@ int run_info(const InfoArgs& a) {
               << "stored as: " << scalar_type_name(g->type()) << " (" << g->bytes() << " bytes)\n"
               << "spacing: " << vec(g->spacing()) << "\n"
               << "origin: " << vec(g->origin()) << "\n";
-    h = histogram(*g, 256);
   } else {
     const TetMesh& m = std::get<TetMesh>(volume);
     std::cout << "kind: tetrahedral mesh\n"
               << "points: " << m.points().size() << ", tetrahedra: " << m.tets().size() << "\n";
-    h = histogram(std::span<const float>(m.scalars()), 256);
   }
   std::cout << "box: " << vec(lo) << " .. " << vec(hi) << "\n"
             << "range: " << h.lo << " .. " << h.hi << "\n";

@@ -78,8 +78,7 @@ void SceneFlags::add_to(CLI::App* cmd) {
 }
 
 Scene SceneFlags::load(const std::string& scene_file, const PartialLoad* part) const {
-  std::error_code error;  // a scene file, or anything the scene loader refuses (a FIFO: issue 47)
-  const bool volume_file = std::filesystem::is_regular_file(scene_file, error) && !is_scene_file(scene_file);
+  const bool volume_file = is_volume_file(scene_file);
   const bool looked = !look.colormap.empty() || !look.opacity.empty() || !look.range.empty();
   if (looked && !volume_file)
     throw Error("--colormap, --opacity and --range apply to a volume file; a scene sets its \"transfer_function\"");

@@ -29,7 +29,6 @@ std::unique_ptr<GpuSceneRenderer> make_vulkan_scene_renderer(const Scene& scene)
       throw Error("--backend vulkan: method '" + m + "' on tetrahedral meshes is not on the GPU yet; " +
                   method_names([](const MethodInfo& i) { return i.gpu_mesh; }) + " is (docs/GPU.md)");
     check_mesh_termination(scene.method);  // as make_integrator on the CPU
-
   }
   if (!info.make_gpu) throw Error("method '" + m + "' is in the method registry without a GPU renderer");
   return info.make_gpu(scene);

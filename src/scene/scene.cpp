@@ -26,6 +26,11 @@ void set_clip(Volume& volume, ClipRegion clip) {
   std::visit([&](auto& v) { v.set_clip(std::move(clip)); }, volume);
 }
 
+Histogram histogram(const Volume& volume, int bins) {
+  if (const auto* g = std::get_if<GridVolume>(&volume)) return histogram(*g, bins);
+  return histogram(std::span<const float>(std::get<TetMesh>(volume).scalars()), bins);
+}
+
 std::pair<Vec3, Vec3> bounds(const Volume& volume) {
   if (const auto* g = std::get_if<GridVolume>(&volume)) return {g->whole_lo(), g->whole_hi()};  // a part's whole grid
   const std::vector<Vec3>& points = std::get<TetMesh>(volume).points();

@@ -409,7 +409,8 @@ ClipRegion clip_from(const json& cj, const Reader& top) {
       const std::string key = "planes[" + std::to_string(i) + "]";
       const auto p = c.numbers(planes[i], key, 4);
       const ClipPlane plane{{p[0], p[1], p[2]}, p[3]};
-      if (!(dot(plane.normal, plane.normal) > 0) || !std::isfinite(dot(plane.normal, plane.normal)))
+      const double length2 = dot(plane.normal, plane.normal);
+      if (!(length2 > 0) || !std::isfinite(length2))
         c.expected(key, "a plane [nx, ny, nz, d] whose normal is not 0", planes[i]);
       clip.planes.push_back(plane);
     }

@@ -17,11 +17,6 @@ using nlohmann::json;
 
 namespace {
 
-Histogram histogram_of(const Volume& volume) {
-  if (const auto* g = std::get_if<GridVolume>(&volume)) return histogram(*g);
-  return histogram(std::span<const float>(std::get<TetMesh>(volume).scalars()));
-}
-
 // --range: "data", "pLO,pHI" (percentiles) or "LO,HI", as a transfer
 // function's "range" (docs/SCENES.md).
 json range_json(const std::string& text) {
@@ -57,9 +52,9 @@ json default_method_json(const Volume& volume) {
                                                     : json{{"name", "tet-raycast"}};
 }
 
-json volume_scene_json(const Volume& volume, const VolumeLook& look) {
+json volume_scene_json(const Volume& volume, const VolumeLook& look, const Histogram* given) {
   const auto [lo, hi] = bounds(volume);
-  const TransferFunction suggested = suggest_transfer_function(histogram_of(volume), length(hi - lo));
+  const TransferFunction suggested = suggest_transfer_function(given ? *given : histogram(volume), length(hi - lo));
   json tf;
   if (look.colormap.empty() && look.opacity.empty()) {
     tf = transfer_function_json(suggested);  // `vri info`'s
@@ -76,14 +71,14 @@ Scene volume_scene(Volume volume, const VolumeLook& look) {
   return parse_scene(text, std::move(volume), ".", "volume");
 }
 
-bool is_scene_file(const std::filesystem::path& path) {
+bool is_volume_file(const std::filesystem::path& path) {
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) return false;  // a FIFO is not read, nor waited on
+  if (!std::filesystem::is_regular_file(path, error)) return false;
   std::ifstream in(path, std::ios::binary);
   char c = 0;
   while (in.get(c))
-    if (!std::isspace(static_cast<unsigned char>(c))) return c == '{';
-  return false;
+    if (!std::isspace(static_cast<unsigned char>(c))) return c != '{';
+  return true;  // empty or blank: the volume readers say what it lacks
 }
 
 }  // namespace vri

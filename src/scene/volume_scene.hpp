@@ -11,7 +11,10 @@ namespace vri {
 
 // {"transfer_function", "camera", "method"} of `volume` seen as `look` says
 // (vri/scene.hpp, VolumeLook); vri::Error naming the flag for a bad value.
-nlohmann::json volume_scene_json(const Volume& volume, const VolumeLook& look = {});
+// `histogram`: the volume's 256-bin histogram where the caller has made it
+// (the viewer describes the volume with it), else made here.
+nlohmann::json volume_scene_json(const Volume& volume, const VolumeLook& look = {},
+                                 const Histogram* histogram = nullptr);
 
 // The method a volume of this kind opens with: interactive and accurate
 // (preint1 at step 1 on grids, tet-raycast on meshes).

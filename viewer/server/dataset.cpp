@@ -44,12 +44,6 @@ void absolute_files(json& j, const fs::path& base) {
   }
 }
 
-// The histogram of a grid's samples or a mesh's point scalars (its range is the data's).
-Histogram histogram_of(const Volume& volume) {
-  if (const auto* g = std::get_if<GridVolume>(&volume)) return histogram(*g);
-  return histogram(std::span<const float>(std::get<TetMesh>(volume).scalars()));
-}
-
 // The page's view of the volume: what it is, its range and box, the unit of the opacity axis.
 json describe(const Dataset& d, const Histogram& h) {
   const auto [lo, hi] = bounds(d.volume);
@@ -105,13 +99,13 @@ std::shared_ptr<const Dataset> load_dataset(const fs::path& file, const std::str
   } else {
     volume_json = {{"file", fs::absolute(file).lexically_normal().string()}};
     volume.emplace(load_volume(file));
-    h = histogram_of(*volume);
-    scene = volume_scene_json(*volume);  // as `vri render VOLUME` sees it
+    h = histogram(*volume);
+    scene = volume_scene_json(*volume, {}, &*h);  // as `vri render VOLUME` sees it
     scene["lighting"] = lighting_json(Lighting{});
     scene["background"] = {0, 0, 0};
   }
   auto d = std::make_shared<Dataset>(Dataset{id, base, std::move(*volume), std::move(volume_json), std::move(scene), {}});
-  if (!h) h = histogram_of(d->volume);
+  if (!h) h = histogram(d->volume);
   d->description = describe(*d, *h);
   return d;
 }
